@@ -4,5 +4,6 @@ moorsph_add_gtest(NAME test_wave_theory
     ${CMAKE_CURRENT_LIST_DIR}/test_dispersion.cpp
     ${CMAKE_CURRENT_LIST_DIR}/test_airy_stokes.cpp
     ${CMAKE_CURRENT_LIST_DIR}/test_peregrine_breather.cpp
+    ${CMAKE_CURRENT_LIST_DIR}/test_piston_transfer.cpp
   LIBS moorsph_fluid
   LABELS fast)
