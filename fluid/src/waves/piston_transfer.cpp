@@ -3,6 +3,7 @@
 #include <cmath>
 #include <complex>
 #include <stdexcept>
+#include <string>
 
 #include <unsupported/Eigen/FFT>
 
