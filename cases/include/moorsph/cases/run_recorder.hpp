@@ -1,0 +1,55 @@
+#pragma once
+// Runs a fluid simulation to an end time and records, at a fixed output interval,
+// the time series every run has (energy terms, dt, particle count, wall time) plus
+// a scene's own probes, into series.h5. Output is flushed at every output time, so a
+// run that stops early keeps what it wrote.
+#include <chrono>
+#include <functional>
+#include <string>
+#include <vector>
+#include <moorsph/fluid/fluid_simulation.hpp>
+#include <moorsph/io/series_file.hpp>
+
+namespace moorsph::cases {
+
+struct RunSummary {
+  double simulated_time = 0.0;  ///< [s]
+  std::size_t steps = 0;
+  double wall_seconds = 0.0;
+  std::size_t particles = 0;
+  double initial_energy = 0.0;     ///< [J]
+  double max_energy_rise = 0.0;    ///< max over outputs of E(t) - E(0) [J]
+  double final_energy = 0.0;       ///< [J]
+  std::string error;               ///< non-empty if the run stopped on a SimulationError
+};
+
+template <int D>
+class RunRecorder {
+ public:
+  using Probe = std::function<std::vector<double>(const fluid::FluidSimulation<D>&)>;
+
+  RunRecorder(fluid::FluidSimulation<D>& sim, io::SeriesFile& file, double output_interval);
+  /// Record one more series; `probe` returns one value per column at each output.
+  void addSeries(const std::string& name, const std::vector<io::SeriesColumn>& columns, Probe probe,
+                 const std::string& description = "");
+  /// Run to end_time. A SimulationError stops the run: it is reported in the summary
+  /// (and printed by `log` if given) after the output written so far is flushed.
+  RunSummary runTo(double end_time, const std::function<void(const std::string&)>& log = {});
+
+ private:
+  void record();
+
+  fluid::FluidSimulation<D>& sim_;
+  io::SeriesFile& file_;
+  double interval_;
+  int energy_series_;
+  struct Entry {
+    int handle;
+    Probe probe;
+  };
+  std::vector<Entry> probes_;
+  RunSummary summary_;
+  std::chrono::steady_clock::time_point start_;
+};
+
+}  // namespace moorsph::cases

@@ -1,0 +1,106 @@
+#pragma once
+// The force of one boundary particle k on one fluid particle i (METHOD.md section 2):
+//
+//   F_ik / m_i = (strength c_s^2 / h) B(r_par) S(q) n_k,   q = (r_perp . n_k + b_off dx) / h
+//   S(q) = (0.8/q)^8            0 < q <= 0.8        (s = 8, d = 1: s d/(s+2) = 0.8)
+//          25 (q - 1)^2         0.8 <= q <= 1       ((s+2)/(2d))^2 = 25
+//          0                    otherwise, also behind the (offset) wall
+//   B(r_par) = 1 - |r_par|/dx   for |r_par| <= dx, else 0
+//
+// S is continuous with a continuous slope at q = 0.8 (both branches give 1 and -10).
+// A corner particle with several normals pushes a fluid particle that is in front of
+// two or more of them along the single effective normal pointing straight at it
+// from the corner; in front of exactly one, that normal acts alone. "Straight at it"
+// is taken perpendicular to the corner's edge line: r_perp is the part of r_ik in the
+// span of the normals the particle faces, r_par the rest (along a 3D edge), and B
+// applies to r_par as on a flat wall. In 2D corners and 3D vertices the span is the
+// whole space, so r_perp = r_ik and B = 1 as METHOD.md says. (Pushing radially from
+// every particle of a 3D edge line instead throws particles near the line sideways
+// with unbounded force; that instability was observed in a 3D hydrostatic tank.)
+//
+// The boundary particle feels -F_ik: walls() sums these reactions for the wrench on a
+// body and for pressure sensors. The same function is evaluated on both sides, so
+// action and reaction are equal to the last bit.
+#include <cmath>
+#include <moorsph/fluid/boundary_particles.hpp>
+
+namespace moorsph::fluid {
+
+template <int D>
+class BoundaryForceLaw {
+ public:
+  BoundaryForceLaw(double strength, double sound_speed, double h, double dx, double b_off)
+      : scale_(strength * sound_speed * sound_speed / h), inv_h_(1.0 / h), dx_(dx), inv_dx_(1.0 / dx),
+        offset_(b_off * dx) {}
+
+  /// S(q) of METHOD.md section 2.
+  static double shape(double q) {
+    if (q <= 0.0 || q >= 1.0) return 0.0;
+    if (q < 0.8) {
+      const double a = 0.8 / q;
+      const double a2 = a * a;
+      const double a4 = a2 * a2;
+      return a4 * a4;
+    }
+    const double b = q - 1.0;
+    return 25.0 * b * b;
+  }
+
+  /// Acceleration of fluid particle i due to boundary particle k, r_ik = r_i - r_k.
+  Vec<D> acceleration(const Vec<D>& r_ik, const BoundaryParticles<D>& b, std::size_t k) const {
+    const std::uint32_t first = b.normal_begin[k];
+    const std::uint32_t last = b.normal_begin[k + 1];
+    if (last - first == 1) return alongNormal(r_ik, b.normals[first]);
+    // Corner: which of its normals is the fluid particle in front of?
+    int in_front = 0;
+    std::uint32_t only = first;
+    for (std::uint32_t a = first; a < last; ++a) {
+      if (r_ik.dot(b.normals[a]) > 0.0) {
+        ++in_front;
+        only = a;
+      }
+    }
+    if (in_front == 0) return Vec<D>::Zero();
+    if (in_front == 1) return alongNormal(r_ik, b.normals[only]);
+    // Project r_ik on the span of the faced normals (Gram-Schmidt on at most D vectors).
+    Vec<D> basis[D];
+    int rank = 0;
+    Vec<D> r_perp = Vec<D>::Zero();
+    for (std::uint32_t a = first; a < last && rank < D; ++a) {
+      if (r_ik.dot(b.normals[a]) <= 0.0) continue;
+      Vec<D> e = b.normals[a];
+      for (int c = 0; c < rank; ++c) e -= e.dot(basis[c]) * basis[c];
+      const double len = e.norm();
+      if (len < 1e-9) continue;
+      basis[rank] = e / len;
+      r_perp += r_ik.dot(basis[rank]) * basis[rank];
+      ++rank;
+    }
+    const double dist = r_perp.norm();
+    const double s = shape((dist + offset_) * inv_h_);
+    if (s == 0.0 || dist == 0.0) return Vec<D>::Zero();
+    const double par2 = (r_ik - r_perp).squaredNorm();
+    if (par2 >= dx_ * dx_) return Vec<D>::Zero();
+    const double B = 1.0 - std::sqrt(par2) * inv_dx_;
+    return (scale_ * B * s / dist) * r_perp;
+  }
+
+ private:
+  Vec<D> alongNormal(const Vec<D>& r_ik, const Vec<D>& n) const {
+    const double perp = r_ik.dot(n);
+    const double s = shape((perp + offset_) * inv_h_);
+    if (s == 0.0) return Vec<D>::Zero();
+    const double par2 = r_ik.squaredNorm() - perp * perp;
+    if (par2 >= dx_ * dx_) return Vec<D>::Zero();
+    const double B = 1.0 - std::sqrt(std::max(par2, 0.0)) * inv_dx_;
+    return (scale_ * B * s) * n;
+  }
+
+  double scale_;
+  double inv_h_;
+  double dx_;
+  double inv_dx_;
+  double offset_;
+};
+
+}  // namespace moorsph::fluid

@@ -1,0 +1,48 @@
+#pragma once
+// Geometry builders for boxes: a box tank's walls, a box obstacle's surface, and a
+// block of fluid particles on a lattice.
+#include <array>
+#include <moorsph/fluid/boundary_particles.hpp>
+#include <moorsph/fluid/fluid_particles.hpp>
+#include <moorsph/fluid/tait_eos.hpp>
+
+namespace moorsph::fluid {
+
+/// Which faces of a box exist: face 2k is the lower face along axis k, 2k+1 the upper.
+template <int D>
+using BoxFaces = std::array<bool, 2 * D>;
+
+template <int D>
+BoxFaces<D> allFaces() {
+  BoxFaces<D> f;
+  f.fill(true);
+  return f;
+}
+
+/// A tank open at the top (no upper face along y).
+template <int D>
+BoxFaces<D> openTopTank() {
+  BoxFaces<D> f = allFaces<D>();
+  f[2 * 1 + 1] = false;
+  return f;
+}
+
+enum class NormalSide { Inward, Outward };
+
+/// Boundary particles on the present faces of the box [lower, upper], on a lattice
+/// whose spacing is the largest not exceeding `spacing` that divides each edge
+/// exactly. Particles on an edge or corner where several present faces meet carry
+/// one normal per face. Inward normals make a tank; outward normals an obstacle.
+template <int D>
+BoundaryParticles<D> sampleBoxSurface(const Vec<D>& lower, const Vec<D>& upper, double spacing,
+                                      const BoxFaces<D>& faces, NormalSide side);
+
+/// Fluid particles filling [lower, upper] on a lattice of spacing dx, each a half
+/// spacing inside the faces, mass rho0 dx^D. With `gravity` non-zero the density is
+/// hydrostatic under the free surface at `surface_height` (y), so the block starts
+/// near equilibrium; pass zero gravity for uniform rho0.
+template <int D>
+void fillBox(FluidParticles<D>& fluid, const Vec<D>& lower, const Vec<D>& upper, double dx, const TaitEos& eos,
+             double gravity, double surface_height);
+
+}  // namespace moorsph::fluid

@@ -1,0 +1,38 @@
+#pragma once
+// A fluid effect: one physical ingredient that a scene names (gravity, walls, a
+// forcing region, a damping zone...). The step calls each built effect once per
+// rate evaluation (a virtual call per evaluation, never per particle pair), after
+// the pair forces. Effects a scene does not name are never constructed.
+#include <cstdint>
+#include <moorsph/fluid/fluid_particles.hpp>
+#include <moorsph/fluid/fluid_setup.hpp>
+#include <moorsph/fluid/neighbour_search.hpp>
+#include <moorsph/fluid/tait_eos.hpp>
+#include <moorsph/fluid/wendland_kernel.hpp>
+
+namespace moorsph::fluid {
+
+/// What an effect sees during one evaluation of the rates.
+template <int D>
+struct FluidContext {
+  FluidParticles<D>& fluid;
+  const NeighbourSearch<D>& neighbours;
+  const WendlandKernel<D>& kernel;
+  const TaitEos& eos;
+  const FluidSetup<D>& setup;
+  double time;  ///< time of the state being evaluated [s]
+};
+
+template <int D>
+class FluidEffect {
+ public:
+  virtual ~FluidEffect() = default;
+  /// The scene's name for this effect.
+  virtual const char* name() const = 0;
+  /// Add this effect's contribution to dv/dt, dr/dt or drho/dt.
+  virtual void addRates(FluidContext<D>& ctx) = 0;
+  /// Move prescribed parts (boundaries, makers) to time t before the state at t is evaluated.
+  virtual void advanceTo(double /*t*/) {}
+};
+
+}  // namespace moorsph::fluid

@@ -1,0 +1,105 @@
+#pragma once
+// A weakly-compressible SPH fluid assembled from the effects a scene names
+// (DESIGN.md section 5), advanced by the predictor-corrector of METHOD.md section 1:
+//
+//   rates at the start of the step (r^n, v^n, rho^n)       -> a^n, (dr/dt)^n, D^n
+//   predict with Euler:        x* = x^n + f dt (dx/dt)^n
+//   rates at the predicted state                            -> a*, (dr/dt)*, D*
+//   correct from the start:    x^{n+1} = x^n + dt (dx/dt)*
+//
+// Two rate evaluations per step. The reference (f = 1, METHOD.md's "predict with
+// Euler") has amplification 1 + z + z^2 for z = i omega dt, |.|^2 = 1 - x^2 + x^4:
+// it damps acoustic noise, at the price of first-order accuracy. f = 1/2 is the
+// midpoint rule (1 + z + z^2/2, |.|^2 = 1 + x^4/4): second order but it amplifies
+// undamped acoustic modes, so it needs density diffusion (method option).
+//
+// Time step (METHOD.md section 1): dt = min(CFL h/(c_s + 2 xi mu/(h rho0)),
+// force_dt_factor sqrt(h / max|a|)); the second bound matters in impacts.
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <vector>
+#include <moorsph/fluid/fluid_effect.hpp>
+#include <moorsph/fluid/pair_forces.hpp>
+#include <moorsph/fluid/walls.hpp>
+
+namespace moorsph::fluid {
+
+/// Raised when a run goes wrong (NaN, a particle leaving the domain). The message
+/// names the particle, its state and the time.
+class SimulationError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+/// Mechanical energy of the fluid [J]. potential is sum(-m g.r); elastic is the Tait
+/// compression energy sum(m e(rho)).
+struct FluidEnergy {
+  double kinetic = 0.0;
+  double potential = 0.0;
+  double elastic = 0.0;
+  double total() const { return kinetic + potential + elastic; }
+};
+
+template <int D>
+class FluidSimulation {
+ public:
+  /// Builds exactly the effects `setup.effects` names. Throws std::invalid_argument
+  /// for an unknown effect, a missing one that another needs, or inconsistent input.
+  FluidSimulation(FluidSetup<D> setup, FluidParticles<D> fluid, BoundaryGeometry<D> boundary = {});
+
+  /// One predictor-corrector step.
+  void step();
+  /// Step until time() >= t (the last step is not shortened).
+  void advanceTo(double t);
+
+  /// Add an effect built outside (e.g. by coupling/ or io/); it runs after the built-in ones.
+  void addEffect(std::unique_ptr<FluidEffect<D>> effect);
+
+  double time() const { return time_; }
+  double lastDt() const { return dt_; }
+  std::size_t stepCount() const { return steps_; }
+  /// The CFL-limited time step (the largest the scheme will take).
+  double cflDt() const { return cfl_dt_; }
+
+  const FluidSetup<D>& setup() const { return setup_; }
+  const FluidParticles<D>& fluid() const { return fluid_; }
+  FluidParticles<D>& updFluid() { return fluid_; }
+  const WendlandKernel<D>& kernel() const { return kernel_; }
+  const TaitEos& eos() const { return eos_; }
+  const NeighbourSearch<D>& neighbours() const { return neighbours_; }
+  /// The walls effect, or null if the scene has no walls.
+  const Walls<D>* walls() const { return walls_; }
+  Walls<D>* updWalls() { return walls_; }
+
+  /// Names of the effects that were built, in evaluation order (the pair terms first).
+  std::vector<std::string> effectNames() const;
+  /// Fluid-fluid pairs within 2h evaluated by the last rate evaluation.
+  std::uint64_t lastInteractions() const { return pairs_->lastInteractions(); }
+  FluidEnergy calcEnergy() const;
+
+ private:
+  void buildEffects(BoundaryGeometry<D> boundary);
+  void evaluateRates(double t, bool may_rebuild);
+  double computeDt() const;
+  void predict(double dt);
+  void correct(double dt);
+  void checkHealth() const;
+
+  FluidSetup<D> setup_;
+  FluidParticles<D> fluid_;
+  WendlandKernel<D> kernel_;
+  TaitEos eos_;
+  NeighbourSearch<D> neighbours_;
+  std::unique_ptr<PairForces<D>> pairs_;
+  std::vector<std::unique_ptr<FluidEffect<D>>> effects_;
+  Walls<D>* walls_ = nullptr;  // owned by effects_
+  std::vector<char> no_tracking_;
+  double time_ = 0.0;
+  double dt_ = 0.0;
+  double cfl_dt_ = 0.0;
+  std::size_t steps_ = 0;
+  bool rates_current_ = false;
+};
+
+}  // namespace moorsph::fluid

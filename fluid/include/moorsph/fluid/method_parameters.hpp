@@ -1,0 +1,44 @@
+#pragma once
+// Numerical-method parameters. `reference()` is METHOD.md exactly; options on top
+// of it (density diffusion, the Monaghan XSPH form) are off there.
+#include <string>
+
+namespace moorsph::fluid {
+
+enum class XsphForm {
+  /// METHOD.md: dr/dt = (1 - eps) v_i + eps sum_j (m_j/rho_j) v_j W_ij, self term included.
+  Reference,
+  /// Monaghan (1989): dr/dt = v_i + eps sum_j (m_j/rho_j) (v_j - v_i) W_ij; keeps a uniform
+  /// flow's speed exactly, also where the kernel is truncated at the free surface.
+  Monaghan,
+};
+
+enum class DensityDiffusionForm {
+  MolteniColagrossi,  ///< Molteni & Colagrossi (2009)
+  Fourtakas,          ///< Fourtakas et al. (2019): hydrostatic part removed, no wall spurious flux
+};
+
+struct MethodParameters {
+  std::string name = "reference";
+  double h_factor = 1.2;             ///< h = h_factor dx
+  double cfl = 0.5;                  ///< dt = cfl h / (c_s + 2 xi mu/(h rho0))
+  /// Fraction of dt the predictor advances. 1: METHOD.md's Euler predictor (damps
+  /// acoustic modes, first order in time); 0.5: the midpoint rule (second order,
+  /// needs a smaller cfl or density diffusion to stay stable).
+  double predictor_fraction = 1.0;
+  double force_dt_factor = 0.25;     ///< dt <= force_dt_factor sqrt(h / max|a|)
+  double gamma = 7.0;                ///< Tait exponent
+  double xsph_eps = 0.5;             ///< XSPH epsilon
+  XsphForm xsph_form = XsphForm::Reference;
+  double viscosity_xi = 5.75;        ///< Cleary xi for the Wendland kernel
+  double viscosity_beta_factor = 0.01;  ///< beta = factor * dx
+  double boundary_offset = 0.5;      ///< b_off: distance pushed back into the wall, in dx
+  double boundary_strength = 0.01;   ///< wall force scale: strength c_s^2 m_i / h
+  double density_diffusion_delta = 0.1;
+  DensityDiffusionForm density_diffusion_form = DensityDiffusionForm::Fourtakas;
+  double skin_factor = 0.15;         ///< Verlet skin = skin_factor * 2h
+
+  static MethodParameters reference() { return MethodParameters{}; }
+};
+
+}  // namespace moorsph::fluid

@@ -1,0 +1,35 @@
+#pragma once
+// Fluid-fluid pair interactions (METHOD.md section 1), fused in one loop over each
+// particle's neighbours:
+//   continuity   drho_i/dt = sum_j m_j (v_i - v_j) . grad_i W_ij
+//   momentum     dv_i/dt   = - sum_j m_j (P_i/rho_i^2 + P_j/rho_j^2 + Pi_ij) grad_i W_ij
+// plus the terms a scene names: Cleary viscosity Pi_ij ("viscosity"), XSPH
+// ("xsph"), density diffusion ("density_diffusion"). The loop is a template over the
+// chosen terms, so a term not named costs nothing and is never constructed; the
+// choice is dispatched once when the simulation is built (DESIGN.md section 5).
+//
+// The loop is a gather (each particle sums its own neighbours), so it needs no
+// atomics; it counts the pairs within 2h it evaluated ("neighbour interactions").
+#include <cstdint>
+#include <memory>
+#include <moorsph/fluid/fluid_effect.hpp>
+
+namespace moorsph::fluid {
+
+template <int D>
+class PairForces {
+ public:
+  virtual ~PairForces() = default;
+  /// Pressures from the equation of state, then dv/dt, drho/dt and dr/dt of every particle
+  /// (overwritten, not accumulated).
+  virtual void evaluate(FluidContext<D>& ctx) = 0;
+  /// Pairs within 2h evaluated by the last call.
+  virtual std::uint64_t lastInteractions() const = 0;
+};
+
+/// Build the pair loop for the effects `setup` names. Throws std::invalid_argument
+/// if "pressure" is missing (a weakly-compressible fluid cannot move without it).
+template <int D>
+std::unique_ptr<PairForces<D>> makePairForces(const FluidSetup<D>& setup);
+
+}  // namespace moorsph::fluid

@@ -1,0 +1,51 @@
+#pragma once
+// The optional terms of the fluid pair loop, each a small value type constructed
+// only when the scene names it (see pair_forces.hpp).
+#include <moorsph/fluid/counted.hpp>
+#include <moorsph/fluid/fluid_setup.hpp>
+
+namespace moorsph::fluid {
+
+/// Placeholder for a term the scene did not name.
+struct NoTerm {};
+
+/// Cleary viscosity (METHOD.md section 1), added to the pressure coefficient:
+///   Pi_ij = -(xi/(rho_i rho_j)) (4 mu_i mu_j/(mu_i + mu_j)) (v_ij . r_ij) / (|r_ij|^2 + beta^2)
+/// With one fluid, 4 mu^2/(2 mu) = 2 mu. Approaching particles (v_ij . r_ij < 0) get
+/// Pi > 0, an extra repulsion: the term dissipates.
+struct ViscosityTerm : Counted<ViscosityTerm> {
+  double xi_mu_eff;  ///< xi * 4 mu_i mu_j / (mu_i + mu_j)  [Pa s]
+  double beta2;      ///< beta^2 [m^2]
+  template <int D>
+  explicit ViscosityTerm(const FluidSetup<D>& s)
+      : xi_mu_eff(s.method.viscosity_xi * 2.0 * s.mu),
+        beta2(s.method.viscosity_beta_factor * s.dx * s.method.viscosity_beta_factor * s.dx) {}
+};
+
+/// XSPH velocity smoothing (METHOD.md section 1, or Monaghan's form; see XsphForm).
+struct XsphTerm : Counted<XsphTerm> {
+  double eps;
+  XsphForm form;
+  template <int D>
+  explicit XsphTerm(const FluidSetup<D>& s) : eps(s.method.xsph_eps), form(s.method.xsph_form) {}
+};
+
+/// Density diffusion (delta-SPH), the usual cure for WCSPH pressure noise:
+///   drho_i/dt += delta h c_s sum_j 2 (rho_i - rho_j - rho_ij^H) (r_ij . grad_i W_ij)/(|r_ij|^2 + eta^2) V_j
+/// Molteni & Colagrossi (2009) have rho_ij^H = 0. Fourtakas et al. (2019) subtract the
+/// hydrostatic density difference rho_ij^H = rho0 (g . r_ij)/c_s^2 so that a still
+/// fluid under gravity has no spurious diffusive flux. eta^2 = 0.01 h^2.
+template <int D>
+struct DensityDiffusionTerm : Counted<DensityDiffusionTerm<D>> {
+  double coefficient;  ///< 2 delta h c_s [m^2/s]
+  double eta2;         ///< [m^2]
+  Vec<D> hydrostatic;  ///< rho0 g / c_s^2 (Fourtakas) or zero  [kg/m^4]
+  explicit DensityDiffusionTerm(const FluidSetup<D>& s)
+      : coefficient(2.0 * s.method.density_diffusion_delta * s.h() * s.sound_speed),
+        eta2(0.01 * s.h() * s.h()),
+        hydrostatic(s.method.density_diffusion_form == DensityDiffusionForm::Fourtakas
+                        ? Vec<D>(s.rho0 * s.gravity / (s.sound_speed * s.sound_speed))
+                        : Vec<D>(Vec<D>::Zero())) {}
+};
+
+}  // namespace moorsph::fluid

@@ -1,0 +1,65 @@
+#pragma once
+// The "walls" effect: every boundary surface (tank walls, obstacles, bodies) as one
+// layer of boundary particles pushing the fluid along their normals
+// (BoundaryForceLaw, METHOD.md section 2). For surfaces that track reactions it also
+// sums, per boundary particle, the equal and opposite force of the fluid on it; these
+// give a body's hydrodynamic wrench and the load on pressure sensors.
+#include <vector>
+#include <Eigen/Geometry>
+#include <moorsph/fluid/boundary_force_law.hpp>
+#include <moorsph/fluid/counted.hpp>
+#include <moorsph/fluid/fluid_effect.hpp>
+
+namespace moorsph::fluid {
+
+/// Boundary particles with the surfaces they belong to.
+template <int D>
+struct BoundaryGeometry {
+  BoundaryParticles<D> particles;
+  std::vector<SurfaceInfo> surfaces;
+
+  /// Append `part` as a new surface and return its index.
+  std::uint16_t addSurface(const BoundaryParticles<D>& part, SurfaceInfo info) {
+    const auto index = static_cast<std::uint16_t>(surfaces.size());
+    surfaces.push_back(std::move(info));
+    particles.append(part, index);
+    return index;
+  }
+  bool empty() const { return particles.size() == 0; }
+};
+
+/// Net force [N] and torque [N m] about a reference point. In 2D the torque is the
+/// z component (about the axis normal to the x-y plane).
+struct SurfaceWrench {
+  Eigen::Vector3d force = Eigen::Vector3d::Zero();
+  Eigen::Vector3d torque = Eigen::Vector3d::Zero();
+};
+
+template <int D>
+class Walls final : public FluidEffect<D>, Counted<Walls<D>> {
+ public:
+  Walls(BoundaryGeometry<D> geometry, const FluidSetup<D>& setup);
+
+  const char* name() const override { return "walls"; }
+  void addRates(FluidContext<D>& ctx) override;
+
+  const BoundaryParticles<D>& particles() const { return geometry_.particles; }
+  BoundaryParticles<D>& updParticles() { return geometry_.particles; }
+  const std::vector<SurfaceInfo>& surfaces() const { return geometry_.surfaces; }
+  /// 1 for boundary particles whose reactions are computed.
+  const std::vector<char>& trackedMask() const { return tracked_; }
+  const BoundaryForceLaw<D>& law() const { return law_; }
+
+  /// Sum of the reactions of `surface` and their moments about `point` (tracked surfaces only).
+  SurfaceWrench calcSurfaceWrench(std::size_t surface, const Vec<D>& point) const;
+
+ private:
+  void addReactions(FluidContext<D>& ctx);
+
+  BoundaryGeometry<D> geometry_;
+  BoundaryForceLaw<D> law_;
+  std::vector<char> tracked_;
+  bool any_tracked_ = false;
+};
+
+}  // namespace moorsph::fluid

@@ -1,0 +1,194 @@
+#include <moorsph/fluid/fluid_simulation.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <moorsph/fluid/gravity.hpp>
+
+namespace moorsph::fluid {
+namespace {
+
+const char* const kKnownEffects[] = {"pressure", "viscosity", "xsph", "density_diffusion", "gravity", "walls"};
+
+void checkSetup(const std::vector<std::string>& effects) {
+  for (const auto& e : effects) {
+    if (std::find(std::begin(kKnownEffects), std::end(kKnownEffects), e) == std::end(kKnownEffects)) {
+      std::string known;
+      for (const char* k : kKnownEffects) known += std::string(known.empty() ? "" : ", ") + k;
+      throw std::invalid_argument("effects: unknown effect '" + e + "' (known: " + known + ")");
+    }
+  }
+}
+
+}  // namespace
+
+template <int D>
+FluidSimulation<D>::FluidSimulation(FluidSetup<D> setup, FluidParticles<D> fluid, BoundaryGeometry<D> boundary)
+    : setup_(std::move(setup)),
+      fluid_(std::move(fluid)),
+      kernel_(setup_.h()),
+      eos_(setup_.rho0, setup_.sound_speed, setup_.method.gamma),
+      neighbours_(setup_.domain, 2.0 * setup_.h(), setup_.method.skin_factor * 2.0 * setup_.h()) {
+  if (!(setup_.dx > 0.0)) throw std::invalid_argument("dx must be positive");
+  if (!(setup_.sound_speed > 0.0)) throw std::invalid_argument("sound_speed must be positive");
+  if (fluid_.size() == 0) throw std::invalid_argument("the scene has no fluid particles");
+  checkSetup(setup_.effects);
+  pairs_ = makePairForces(setup_);
+  buildEffects(std::move(boundary));
+  fluid_.allocateWorkArrays();
+  const double visc_speed = 2.0 * setup_.method.viscosity_xi * setup_.mu / (setup_.h() * setup_.rho0);
+  cfl_dt_ = setup_.method.cfl * setup_.h() / (setup_.sound_speed + visc_speed);
+}
+
+template <int D>
+void FluidSimulation<D>::buildEffects(BoundaryGeometry<D> boundary) {
+  if (setup_.has("gravity")) effects_.push_back(std::make_unique<Gravity<D>>(setup_.gravity));
+  if (setup_.has("walls")) {
+    auto walls = std::make_unique<Walls<D>>(std::move(boundary), setup_);
+    walls_ = walls.get();
+    effects_.push_back(std::move(walls));
+  } else if (!boundary.empty()) {
+    throw std::invalid_argument("the scene has boundary surfaces but 'walls' is not in its effects");
+  }
+}
+
+template <int D>
+void FluidSimulation<D>::addEffect(std::unique_ptr<FluidEffect<D>> effect) {
+  effects_.push_back(std::move(effect));
+  rates_current_ = false;
+}
+
+template <int D>
+std::vector<std::string> FluidSimulation<D>::effectNames() const {
+  std::vector<std::string> names{"pressure"};
+  for (const char* term : {"viscosity", "xsph", "density_diffusion"})
+    if (setup_.has(term)) names.emplace_back(term);
+  for (const auto& e : effects_) names.emplace_back(e->name());
+  return names;
+}
+
+template <int D>
+void FluidSimulation<D>::evaluateRates(double t, bool may_rebuild) {
+  const BoundaryParticles<D>* boundary = walls_ ? &walls_->particles() : nullptr;
+  if (may_rebuild) {
+    double vmax2 = 0.0;
+    const std::size_t n = fluid_.size();
+#pragma omp parallel for schedule(static) reduction(max : vmax2)
+    for (std::size_t i = 0; i < n; ++i) vmax2 = std::max(vmax2, fluid_.v[i].squaredNorm());
+    // Travel bound for the coming step; XSPH can exceed |v| a little, hence the margin.
+    const double travel = 1.5 * std::sqrt(vmax2) * cfl_dt_;
+    if (neighbours_.needsRebuild(fluid_, boundary, travel))
+      neighbours_.rebuild(fluid_, boundary, walls_ ? walls_->trackedMask() : no_tracking_);
+  }
+  FluidContext<D> ctx{fluid_, neighbours_, kernel_, eos_, setup_, t};
+  pairs_->evaluate(ctx);
+  for (auto& e : effects_) e->addRates(ctx);
+  rates_current_ = true;
+}
+
+template <int D>
+double FluidSimulation<D>::computeDt() const {
+  double amax2 = 0.0;
+  const std::size_t n = fluid_.size();
+#pragma omp parallel for schedule(static) reduction(max : amax2)
+  for (std::size_t i = 0; i < n; ++i) amax2 = std::max(amax2, fluid_.dvdt[i].squaredNorm());
+  double dt = cfl_dt_;
+  if (amax2 > 0.0) dt = std::min(dt, setup_.method.force_dt_factor * std::sqrt(setup_.h() / std::sqrt(amax2)));
+  return dt;
+}
+
+template <int D>
+void FluidSimulation<D>::predict(double dt) {
+  FluidParticles<D>& f = fluid_;
+  const Domain<D> domain = setup_.domain;
+  const std::size_t n = f.size();
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < n; ++i) {
+    f.r_start[i] = f.r[i];
+    f.v_start[i] = f.v[i];
+    f.rho_start[i] = f.rho[i];
+    f.r[i] = domain.wrap(f.r[i] + dt * f.drdt[i]);
+    f.v[i] += dt * f.dvdt[i];
+    f.rho[i] += dt * f.drhodt[i];
+  }
+}
+
+template <int D>
+void FluidSimulation<D>::correct(double dt) {
+  FluidParticles<D>& f = fluid_;
+  const Domain<D> domain = setup_.domain;
+  const std::size_t n = f.size();
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < n; ++i) {
+    f.r[i] = domain.wrap(f.r_start[i] + dt * f.drdt[i]);
+    f.v[i] = f.v_start[i] + dt * f.dvdt[i];
+    f.rho[i] = f.rho_start[i] + dt * f.drhodt[i];
+  }
+}
+
+template <int D>
+void FluidSimulation<D>::step() {
+  if (!rates_current_) {
+    for (auto& e : effects_) e->advanceTo(time_);
+    evaluateRates(time_, true);
+  }
+  const double dt = computeDt();
+  const double predicted_dt = setup_.method.predictor_fraction * dt;
+  predict(predicted_dt);
+  for (auto& e : effects_) e->advanceTo(time_ + predicted_dt);
+  evaluateRates(time_ + predicted_dt, false);
+  correct(dt);
+  time_ += dt;
+  dt_ = dt;
+  ++steps_;
+  for (auto& e : effects_) e->advanceTo(time_);
+  checkHealth();
+  evaluateRates(time_, true);  // the rates that start the next step (and set its dt)
+}
+
+template <int D>
+void FluidSimulation<D>::advanceTo(double t) {
+  while (time_ < t) step();
+}
+
+// One O(N) pass: any NaN, or a fluid particle outside the domain, stops the run
+// with the first offender named.
+template <int D>
+void FluidSimulation<D>::checkHealth() const {
+  const FluidParticles<D>& f = fluid_;
+  const std::size_t n = f.size();
+  std::size_t bad = n;
+#pragma omp parallel for schedule(static) reduction(min : bad)
+  for (std::size_t i = 0; i < n; ++i) {
+    const bool finite = f.r[i].allFinite() && f.v[i].allFinite() && std::isfinite(f.rho[i]);
+    if (!finite || !setup_.domain.contains(f.r[i]) || !(f.rho[i] > 0.0)) bad = std::min(bad, i);
+  }
+  if (bad == n) return;
+  std::ostringstream os;
+  const bool finite = f.r[bad].allFinite() && f.v[bad].allFinite() && std::isfinite(f.rho[bad]);
+  os << (finite ? "fluid particle left the domain" : "non-finite fluid state") << " at t = " << time_
+     << " s (step " << steps_ << "): particle id " << f.id[bad] << " at r = (" << f.r[bad].transpose()
+     << ") m, v = (" << f.v[bad].transpose() << ") m/s, rho = " << f.rho[bad] << " kg/m^3; domain ("
+     << setup_.domain.lower.transpose() << ") .. (" << setup_.domain.upper.transpose() << ") m";
+  throw SimulationError(os.str());
+}
+
+template <int D>
+FluidEnergy FluidSimulation<D>::calcEnergy() const {
+  double kinetic = 0.0, potential = 0.0, elastic = 0.0;
+  const FluidParticles<D>& f = fluid_;
+  const std::size_t n = f.size();
+  const Vec<D> g = setup_.has("gravity") ? setup_.gravity : Vec<D>::Zero();
+#pragma omp parallel for schedule(static) reduction(+ : kinetic, potential, elastic)
+  for (std::size_t i = 0; i < n; ++i) {
+    kinetic += 0.5 * f.m[i] * f.v[i].squaredNorm();
+    potential -= f.m[i] * g.dot(f.r[i]);
+    elastic += f.m[i] * eos_.elasticEnergy(f.rho[i]);
+  }
+  return {kinetic, potential, elastic};
+}
+
+template class FluidSimulation<2>;
+template class FluidSimulation<3>;
+
+}  // namespace moorsph::fluid

@@ -1,0 +1,142 @@
+#include <moorsph/fluid/neighbour_search.hpp>
+
+#include <algorithm>
+
+namespace moorsph::fluid {
+
+template <int D>
+NeighbourSearch<D>::NeighbourSearch(const Domain<D>& domain, double support, double skin)
+    : domain_(domain), support_(support), skin_(skin) {
+  grid_.configure(domain, support + skin);
+}
+
+template <int D>
+bool NeighbourSearch<D>::needsRebuild(const FluidParticles<D>& fluid, const BoundaryParticles<D>* boundary,
+                                      double max_step_travel) const {
+  if (rebuild_count_ == 0 || fluid_at_build_.size() != fluid.size()) return true;
+  double max2 = 0.0;
+  const std::size_t n = fluid.size();
+#pragma omp parallel for schedule(static) reduction(max : max2)
+  for (std::size_t i = 0; i < n; ++i) {
+    max2 = std::max(max2, domain_.minimumImage(fluid.r[i] - fluid_at_build_[i]).squaredNorm());
+  }
+  double max_boundary2 = 0.0;
+  if (boundary) {
+    if (boundary_at_build_.size() != boundary->size()) return true;
+    for (std::size_t k = 0; k < boundary->size(); ++k)
+      max_boundary2 = std::max(max_boundary2, domain_.minimumImage(boundary->r[k] - boundary_at_build_[k]).squaredNorm());
+  }
+  // Two particles approach each other by at most the sum of their travels.
+  const double travel = std::sqrt(max2) + std::max(std::sqrt(max2), std::sqrt(max_boundary2)) + 2.0 * max_step_travel;
+  return travel >= skin_;
+}
+
+template <int D>
+void NeighbourSearch<D>::sortFluidByCell(FluidParticles<D>& fluid) {
+  const std::size_t n = fluid.size();
+  const int cells = grid_.cellCount();
+  cell_of_.resize(n);
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < n; ++i) cell_of_[i] = grid_.cellOf(fluid.r[i]);
+  // Counting sort: stable, O(n + cells).
+  cell_start_.assign(cells + 1, 0);
+  for (std::size_t i = 0; i < n; ++i) ++cell_start_[cell_of_[i] + 1];
+  for (int c = 0; c < cells; ++c) cell_start_[c + 1] += cell_start_[c];
+  counts_.assign(cell_start_.begin(), cell_start_.end() - 1);
+  order_.resize(n);
+  for (std::size_t i = 0; i < n; ++i) order_[counts_[cell_of_[i]]++] = static_cast<std::uint32_t>(i);
+  fluid.permute(order_, scratch_);
+}
+
+template <int D>
+void NeighbourSearch<D>::indexBoundary(const BoundaryParticles<D>& boundary) {
+  const std::size_t n = boundary.size();
+  const int cells = grid_.cellCount();
+  boundary_cell_start_.assign(cells + 1, 0);
+  cell_of_.resize(std::max(cell_of_.size(), n));
+  for (std::size_t k = 0; k < n; ++k) {
+    cell_of_[k] = grid_.cellOf(boundary.r[k]);
+    ++boundary_cell_start_[cell_of_[k] + 1];
+  }
+  for (int c = 0; c < cells; ++c) boundary_cell_start_[c + 1] += boundary_cell_start_[c];
+  counts_.assign(boundary_cell_start_.begin(), boundary_cell_start_.end() - 1);
+  boundary_sorted_.resize(n);
+  for (std::size_t k = 0; k < n; ++k) boundary_sorted_[counts_[cell_of_[k]]++] = static_cast<std::uint32_t>(k);
+}
+
+// Two passes (count, then fill) so the list is one compact array without
+// per-thread buffers. `candidates(owner, visit)` calls visit(j) for every j within
+// the list radius.
+template <int D>
+template <class Candidates>
+void NeighbourSearch<D>::buildList(std::size_t owners, NeighbourList& list, Candidates&& candidates) {
+  list.begin.resize(owners + 1);
+  list.begin[0] = 0;
+#pragma omp parallel for schedule(dynamic, 256)
+  for (std::size_t i = 0; i < owners; ++i) {
+    std::uint64_t count = 0;
+    candidates(i, [&](std::uint32_t) { ++count; });
+    list.begin[i + 1] = count;
+  }
+  for (std::size_t i = 0; i < owners; ++i) list.begin[i + 1] += list.begin[i];
+  list.index.resize(list.begin[owners]);
+#pragma omp parallel for schedule(dynamic, 256)
+  for (std::size_t i = 0; i < owners; ++i) {
+    std::uint64_t at = list.begin[i];
+    candidates(i, [&](std::uint32_t j) { list.index[at++] = j; });
+  }
+}
+
+template <int D>
+void NeighbourSearch<D>::rebuild(FluidParticles<D>& fluid, const BoundaryParticles<D>* boundary,
+                                 const std::vector<char>& tracked) {
+  sortFluidByCell(fluid);
+  const double radius2 = listRadius() * listRadius();
+  const auto& grid = grid_;
+  const auto& domain = domain_;
+  const auto& r = fluid.r;
+
+  // Fluid-fluid: every j != i of the fluid within the list radius.
+  buildList(fluid.size(), fluid_fluid_, [&](std::size_t i, auto&& visit) {
+    const int cell = grid.cellOf(r[i]);
+    for (auto c = grid.neighbourCellsBegin(cell); c != grid.neighbourCellsEnd(cell); ++c) {
+      for (std::uint32_t j = cell_start_[*c]; j < cell_start_[*c + 1]; ++j) {
+        if (j != i && domain.minimumImage(r[i] - r[j]).squaredNorm() < radius2) visit(j);
+      }
+    }
+  });
+
+  if (boundary) {
+    indexBoundary(*boundary);
+    const auto& rb = boundary->r;
+    buildList(fluid.size(), fluid_boundary_, [&](std::size_t i, auto&& visit) {
+      const int cell = grid.cellOf(r[i]);
+      for (auto c = grid.neighbourCellsBegin(cell); c != grid.neighbourCellsEnd(cell); ++c) {
+        for (std::uint32_t s = boundary_cell_start_[*c]; s < boundary_cell_start_[*c + 1]; ++s) {
+          const std::uint32_t k = boundary_sorted_[s];
+          if (domain.minimumImage(r[i] - rb[k]).squaredNorm() < radius2) visit(k);
+        }
+      }
+    });
+    tracked_index_.clear();
+    for (std::size_t k = 0; k < tracked.size(); ++k)
+      if (tracked[k]) tracked_index_.push_back(static_cast<std::uint32_t>(k));
+    buildList(tracked_index_.size(), boundary_fluid_, [&](std::size_t t, auto&& visit) {
+      const Vec<D>& x = rb[tracked_index_[t]];
+      const int cell = grid.cellOf(x);
+      for (auto c = grid.neighbourCellsBegin(cell); c != grid.neighbourCellsEnd(cell); ++c) {
+        for (std::uint32_t j = cell_start_[*c]; j < cell_start_[*c + 1]; ++j) {
+          if (domain.minimumImage(x - r[j]).squaredNorm() < radius2) visit(j);
+        }
+      }
+    });
+    boundary_at_build_ = boundary->r;
+  }
+  fluid_at_build_ = fluid.r;
+  ++rebuild_count_;
+}
+
+template class NeighbourSearch<2>;
+template class NeighbourSearch<3>;
+
+}  // namespace moorsph::fluid

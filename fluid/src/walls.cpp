@@ -1,0 +1,81 @@
+#include <moorsph/fluid/walls.hpp>
+
+#include <stdexcept>
+
+namespace moorsph::fluid {
+
+template <int D>
+Walls<D>::Walls(BoundaryGeometry<D> geometry, const FluidSetup<D>& setup)
+    : geometry_(std::move(geometry)),
+      law_(setup.method.boundary_strength, setup.sound_speed, setup.h(), setup.dx, setup.method.boundary_offset) {
+  if (geometry_.empty()) throw std::invalid_argument("effects: 'walls' is named but the scene has no boundary surfaces");
+  tracked_.assign(geometry_.particles.size(), 0);
+  for (std::size_t k = 0; k < tracked_.size(); ++k) {
+    const auto s = geometry_.particles.surface[k];
+    if (s >= geometry_.surfaces.size()) throw std::invalid_argument("boundary particle refers to an unknown surface");
+    tracked_[k] = geometry_.surfaces[s].track_reaction ? 1 : 0;
+    any_tracked_ = any_tracked_ || tracked_[k];
+  }
+}
+
+template <int D>
+void Walls<D>::addRates(FluidContext<D>& ctx) {
+  FluidParticles<D>& f = ctx.fluid;
+  const NeighbourList& list = ctx.neighbours.fluidBoundary();
+  const Domain<D> domain = ctx.setup.domain;
+  const BoundaryParticles<D>& b = geometry_.particles;
+  const std::size_t n = f.size();
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < n; ++i) {
+    Vec<D> acc = Vec<D>::Zero();
+    for (std::uint64_t s = list.begin[i]; s < list.begin[i + 1]; ++s) {
+      const std::uint32_t k = list.index[s];
+      acc += law_.acceleration(domain.minimumImage(f.r[i] - b.r[k]), b, k);
+    }
+    f.dvdt[i] += acc;
+  }
+  if (any_tracked_) addReactions(ctx);
+}
+
+// Reactions by a second gather over the tracked boundary particles: -m_i a_ik for
+// each fluid neighbour, with the same law, so no atomics are needed.
+template <int D>
+void Walls<D>::addReactions(FluidContext<D>& ctx) {
+  const FluidParticles<D>& f = ctx.fluid;
+  const NeighbourList& list = ctx.neighbours.boundaryFluid();
+  const auto& tracked = ctx.neighbours.trackedBoundary();
+  const Domain<D> domain = ctx.setup.domain;
+  BoundaryParticles<D>& b = geometry_.particles;
+  const std::size_t n = tracked.size();
+#pragma omp parallel for schedule(static)
+  for (std::size_t t = 0; t < n; ++t) {
+    const std::uint32_t k = tracked[t];
+    Vec<D> force = Vec<D>::Zero();
+    for (std::uint64_t s = list.begin[t]; s < list.begin[t + 1]; ++s) {
+      const std::uint32_t i = list.index[s];
+      force -= f.m[i] * law_.acceleration(domain.minimumImage(f.r[i] - b.r[k]), b, k);
+    }
+    b.reaction[k] = force;
+  }
+}
+
+template <int D>
+SurfaceWrench Walls<D>::calcSurfaceWrench(std::size_t surface, const Vec<D>& point) const {
+  SurfaceWrench w;
+  const BoundaryParticles<D>& b = geometry_.particles;
+  for (std::size_t k = 0; k < b.size(); ++k) {
+    if (b.surface[k] != surface || !tracked_[k]) continue;
+    Eigen::Vector3d f = Eigen::Vector3d::Zero();
+    Eigen::Vector3d arm = Eigen::Vector3d::Zero();
+    f.template head<D>() = b.reaction[k];
+    arm.template head<D>() = b.r[k] - point;
+    w.force += f;
+    w.torque += arm.cross(f);
+  }
+  return w;
+}
+
+template class Walls<2>;
+template class Walls<3>;
+
+}  // namespace moorsph::fluid

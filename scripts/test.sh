@@ -1,0 +1,10 @@
+#!/usr/bin/env bash
+# Install, build and run the default test suite (label `fast`).
+# Other labels: `stability`, `slow`, `validation` (e.g. scripts/test.sh -L slow).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+bash scripts/build.sh
+export OMP_WAIT_POLICY=passive
+cd build
+if [ $# -eq 0 ]; then set -- -L fast; fi
+ctest --output-on-failure "$@"
