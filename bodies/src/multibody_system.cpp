@@ -4,9 +4,14 @@
 
 #include "system_measures.hpp"
 
+#include <moorsph/bodies/cable_path.hpp>
 #include <moorsph/bodies/multibody_system.hpp>
 
+#include <unistd.h>
+
 #include <cmath>
+#include <cstdio>
+#include <iostream>
 #include <sstream>
 #include <stdexcept>
 
@@ -33,6 +38,43 @@ int speedIndex(Mobilizer mobilizer, Dof dof) {
   }
 }
 
+// Redirects the process's stdout (fd 1) into a temporary file while alive: Simbody 3.7's
+// CablePath prints its internal diagnostics there during realizeTopology() and
+// integrator initialisation. Not thread safe: nothing else should print meanwhile.
+class StdoutCapture {
+ public:
+  StdoutCapture() {
+    std::cout.flush();
+    std::fflush(stdout);
+    file_ = std::tmpfile();
+    saved_ = file_ ? ::dup(1) : -1;
+    if (saved_ >= 0) ::dup2(::fileno(file_), 1);
+  }
+  std::string finish() {
+    std::string text;
+    if (saved_ < 0) return text;
+    std::cout.flush();
+    std::fflush(stdout);
+    ::dup2(saved_, 1);
+    ::close(saved_);
+    saved_ = -1;
+    std::rewind(file_);
+    char buffer[4096];
+    std::size_t n;
+    while ((n = std::fread(buffer, 1, sizeof buffer, file_)) > 0) text.append(buffer, n);
+    std::fclose(file_);
+    file_ = nullptr;
+    return text;
+  }
+  ~StdoutCapture() { finish(); }
+  StdoutCapture(const StdoutCapture&) = delete;
+  StdoutCapture& operator=(const StdoutCapture&) = delete;
+
+ private:
+  std::FILE* file_ = nullptr;
+  int saved_ = -1;
+};
+
 }  // namespace
 
 struct LineEntry {
@@ -40,6 +82,8 @@ struct LineEntry {
   LineAttachment where;
   std::unique_ptr<MooringLine> model;
   SimTK::ForceIndex forceIndex;  // invalid for dynamic lines
+  CablePathLine* cable = nullptr;  // set for cable_path lines (Simbody CableSpring)
+  SimTK::CableSpring spring;
   bool broken = false;
   double breakTime = std::numeric_limits<double>::quiet_NaN();
 };
@@ -61,6 +105,8 @@ struct SystemCore {
   SimTK::Measure dissipatedEnergy;
   SimTK::Measure externalWork;
   std::unique_ptr<SimTK::Force::Gravity> gravity;
+  std::unique_ptr<SimTK::CableTrackerSubsystem> cables;  // only when a cable_path exists
+  std::string capturedOutput;
   std::unique_ptr<SimTK::Integrator> integ;
   bool initialized = false;
   bool anyBreakable = false;
@@ -88,11 +134,38 @@ struct SystemCore {
     return e;
   }
 
+  Eigen::Vector3d stationInGround(const SimTK::State& s, int body, const Eigen::Vector3d& point) const {
+    if (body == LineAttachment::kGround) return point;
+    return toEigen(mobods.at(body).findStationLocationInGround(s, toSimTK(point)));
+  }
+
+  // Ground path of a cable_path line: fairlead, via points, anchor.
+  std::vector<Eigen::Vector3d> cablePoints(const SimTK::State& s, const LineEntry& line) const {
+    std::vector<Eigen::Vector3d> pts{stationInGround(s, line.where.fairleadBody, line.where.fairleadPoint)};
+    for (const CableViaPoint& via : line.cable->params().viaPoints) pts.push_back(stationInGround(s, via.body, via.point));
+    pts.push_back(stationInGround(s, line.where.anchorBody, line.where.anchorPoint));
+    return pts;
+  }
+
+  // What any kind of line does to its ends now (state realized to Velocity at least).
+  LineForces lineForces(const SimTK::State& s, const LineEntry& line) const {
+    if (!line.cable) return line.model->calcForces(endsOf(s, line, true));
+    system.realize(s, SimTK::Stage::Dynamics);
+    LineForces f;
+    const double t = line.spring.getTension(s);
+    const std::vector<Eigen::Vector3d> pts = cablePoints(s, line);
+    f.fairleadTension = f.anchorTension = t;
+    f.onFairlead = t * (pts[1] - pts[0]).normalized();
+    f.onAnchor = t * (pts[pts.size() - 2] - pts.back()).normalized();
+    f.slack = t <= 0.0;
+    return f;
+  }
+
   // Power of the line dampers, W: integrated into the dissipated energy.
   double dissipationPower(const SimTK::State& s) const {
     double p = 0.0;
     for (const LineEntry& line : lines) {
-      if (!line.model->dissipates() || line.model->isDynamic()) continue;
+      if (!line.model->dissipates() || line.model->isDynamic() || line.cable) continue;
       if (forces.getForce(line.forceIndex).isDisabled(s)) continue;
       p += line.model->calcForces(endsOf(s, line, true)).dissipationPower;
     }
@@ -111,6 +184,7 @@ struct SystemCore {
   }
 
   void build();
+  void buildCable(LineEntry& line);
   void stepTo(double t);
   void checkBreaks();
   void exchangeDynamicLineForces();
@@ -146,6 +220,37 @@ class LineForceElement final : public SimTK::Force::Custom::Implementation {
   std::size_t index_;
 };
 
+// cable_path: Simbody CablePath from the fairlead (origin) through the via points to
+// the anchor (termination), tensioned by a CableSpring. A pretension is resolved here
+// from the initial poses because the slack length is a topology-stage parameter.
+void SystemCore::buildCable(LineEntry& line) {
+  if (!cables) cables = std::make_unique<SimTK::CableTrackerSubsystem>(system);
+  auto mobodOf = [&](int body) -> const SimTK::MobilizedBody& {
+    return body == LineAttachment::kGround ? static_cast<const SimTK::MobilizedBody&>(matter.Ground()) : mobods.at(body);
+  };
+  auto initialGround = [&](int body, const Eigen::Vector3d& point) -> Eigen::Vector3d {
+    if (body == LineAttachment::kGround) return point;
+    return specs.at(body).initial.pointToGround(point);
+  };
+  SimTK::CablePath path(*cables, mobodOf(line.where.fairleadBody), toSimTK(line.where.fairleadPoint),
+                        mobodOf(line.where.anchorBody), toSimTK(line.where.anchorPoint));
+  std::vector<Eigen::Vector3d> pts{initialGround(line.where.fairleadBody, line.where.fairleadPoint)};
+  for (const CableViaPoint& via : line.cable->params().viaPoints) {
+    if (via.body < LineAttachment::kGround || via.body >= static_cast<int>(specs.size())) {
+      throw std::invalid_argument("line '" + line.name + "': via point body index out of range");
+    }
+    SimTK::CableObstacle::ViaPoint(path, mobodOf(via.body), toSimTK(via.point));
+    pts.push_back(initialGround(via.body, via.point));
+  }
+  pts.push_back(initialGround(line.where.anchorBody, line.where.anchorPoint));
+  double length = 0.0;
+  for (std::size_t i = 1; i < pts.size(); ++i) length += (pts[i] - pts[i - 1]).norm();
+  line.cable->resolveRestLength(length);
+  const CablePathParams& p = line.cable->params();
+  line.spring = SimTK::CableSpring(forces, path, p.stiffness, p.restLength, p.dissipation);
+  line.forceIndex = line.spring.getForceIndex();
+}
+
 void SystemCore::build() {
   if (specs.empty()) throw std::logic_error("MultibodySystem: no bodies added");
   gravity = std::make_unique<SimTK::Force::Gravity>(forces, matter, toSimTK(options.gravity).norm() > 0
@@ -179,7 +284,10 @@ void SystemCore::build() {
         line.where.anchorBody >= static_cast<int>(specs.size()) || line.where.anchorBody < LineAttachment::kGround) {
       throw std::invalid_argument("line '" + line.name + "': attachment body index out of range");
     }
-    if (line.model->isDynamic()) {
+    line.cable = dynamic_cast<CablePathLine*>(line.model.get());
+    if (line.cable) {
+      buildCable(line);
+    } else if (line.model->isDynamic()) {
       anyDynamic = true;
     } else {
       SimTK::Force::Custom element(forces, new LineForceElement(*this, i));
@@ -194,6 +302,7 @@ void SystemCore::build() {
   dissipatedEnergy = SimTK::Measure::Integrate(forces, dissipation, SimTK::Measure::Zero(forces));
   externalWork = SimTK::Measure::Integrate(forces, power, SimTK::Measure::Zero(forces));
 
+  StdoutCapture capture;  // CablePath's diagnostics (DESIGN.md 3)
   SimTK::State s = system.realizeTopology();
   for (std::size_t b = 0; b < specs.size(); ++b) {
     const BodyKinematics& k = specs[b].initial;
@@ -213,7 +322,9 @@ void SystemCore::build() {
   system.realize(s, SimTK::Stage::Velocity);
   // Lines resolve pretension and initial shape from the initial pose, before the
   // first force evaluation.
-  for (LineEntry& line : lines) line.model->initialize(endsOf(s, line, true));
+  for (LineEntry& line : lines) {
+    if (!line.cable) line.model->initialize(endsOf(s, line, true));
+  }
 
   integ = std::make_unique<SimTK::RungeKuttaMersonIntegrator>(system);
   // Settings must precede initialize() (DESIGN.md 3).
@@ -222,6 +333,7 @@ void SystemCore::build() {
   integ->setAllowInterpolation(false);  // the advanced state is always at the reported time
   integ->setReturnEveryInternalStep(anyBreakable);
   integ->initialize(s);
+  capturedOutput = capture.finish();
   initialized = true;
   if (anyDynamic) exchangeDynamicLineForces();
 }
@@ -254,7 +366,7 @@ void SystemCore::checkBreaks() {
   for (LineEntry& line : lines) {
     if (line.broken || !std::isfinite(line.model->breakingLoad())) continue;
     const SimTK::State& s = integ->getState();
-    const LineForces f = line.model->calcForces(endsOf(s, line, true));
+    const LineForces f = lineForces(s, line);
     if (std::max(f.fairleadTension, f.anchorTension) > line.model->breakingLoad()) {
       line.broken = true;
       line.breakTime = s.getTime();
@@ -383,6 +495,8 @@ long MultibodySystem::internalStepCount() const {
   return impl_->initialized ? static_cast<long>(impl_->integ->getNumStepsTaken()) : 0L;
 }
 
+const std::string& MultibodySystem::capturedSimbodyOutput() const { return impl_->capturedOutput; }
+
 BodyKinematics MultibodySystem::kinematics(int body) const {
   const Impl& m = *impl_;
   if (!m.initialized) return m.specs.at(body).initial;
@@ -432,11 +546,17 @@ EnergyReport MultibodySystem::energy() const {
   EnergyReport e;
   e.kinetic = m.system.calcKineticEnergy(s);
   e.gravitational = m.gravity->calcPotentialEnergyContribution(s);
+  e.dissipated = m.dissipatedEnergy.getValue(s);
   for (const LineEntry& line : m.lines) {
+    if (line.cable) {
+      // Simbody integrates the CableSpring's own dissipation.
+      e.dissipated += line.spring.getDissipatedEnergy(s);
+      if (!line.broken) e.lineElastic += line.spring.getPotentialEnergy(s);
+      continue;
+    }
     if (line.broken) continue;
     e.lineElastic += line.model->calcPotentialEnergy(m.endsOf(s, line, false));
   }
-  e.dissipated = m.dissipatedEnergy.getValue(s);
   e.externalWork = m.externalWork.getValue(s);
   return e;
 }
@@ -454,7 +574,7 @@ LineDiagnostics MultibodySystem::lineDiagnostics(int index, bool withShape) cons
   d.broken = line.broken;
   d.breakTime = line.breakTime;
   if (!line.broken) {
-    const LineForces f = line.model->calcForces(ends);
+    const LineForces f = m.lineForces(s, line);
     d.fairleadTension = f.fairleadTension;
     d.anchorTension = f.anchorTension;
     d.forceOnFairlead = f.onFairlead;
@@ -462,7 +582,7 @@ LineDiagnostics MultibodySystem::lineDiagnostics(int index, bool withShape) cons
   } else {
     d.slack = true;
   }
-  if (withShape && !line.broken) d.shape = line.model->calcShape(ends);
+  if (withShape && !line.broken) d.shape = line.cable ? m.cablePoints(s, line) : line.model->calcShape(ends);
   return d;
 }
 

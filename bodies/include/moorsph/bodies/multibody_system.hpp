@@ -68,6 +68,9 @@ class MultibodySystem {
   LineDiagnostics lineDiagnostics(int line, bool withShape = false) const;
   const MooringLine& line(int line) const;
   long internalStepCount() const;  ///< integrator steps taken so far
+  /// What Simbody printed to stdout while the system was built (CablePath diagnostics
+  /// in Simbody 3.7); kept off the user's terminal, available for logs.
+  const std::string& capturedSimbodyOutput() const;
 
  private:
   struct Impl;
