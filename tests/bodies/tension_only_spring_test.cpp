@@ -123,7 +123,9 @@ TEST(TensionOnlySpring, SnapLoadIsTwiceTheWeightFromRestAtSlackLength) {
     std::printf("[figure] snap load v0=%.1f m/s: peak %.6f N vs %.6f N (rel %.2e)\n", v0, peak, expected,
                 std::abs(peak - expected) / expected);
     EXPECT_NEAR(peak, expected, 1e-4 * expected);
-    if (v0 == 0.0) EXPECT_NEAR(peak, 2.0 * mg, 1e-4 * mg);
+    if (v0 == 0.0) {
+      EXPECT_NEAR(peak, 2.0 * mg, 1e-4 * mg);
+    }
   }
 }
 
