@@ -1,7 +1,7 @@
 #pragma once
 // A cable routed through via points (ideal, frictionless pulleys) fixed on ground or
 // on bodies, for laboratory rigs: inside MultibodySystem it is Simbody's CablePath with
-// CableObstacle::ViaPoint and CableSpring (Simbody 3.7; Sherman, Seth & Delp 2013,
+// CableObstacle::ViaPoint and CableSpring (Simbody 3.7; Sherman, Seth & Delp 2011,
 // "Simbody: multibody dynamics for biomedical research", Procedia IUTAM 2). Units SI.
 //
 //   L = sum of the straight segments fairlead -> via_1 -> ... -> via_n -> anchor
