@@ -1,0 +1,81 @@
+#include <moorsph/fluid/pressure_probe.hpp>
+
+#include <cmath>
+#include <stdexcept>
+
+namespace moorsph::fluid {
+
+template <int D>
+PressureProbe<D>::PressureProbe(PressureProbeSpec<D> spec, const Walls<D>& walls) : spec_(std::move(spec)) {
+  if (!(spec_.normal.norm() > 0.0)) throw std::invalid_argument("pressure probe: the wall normal must be non-zero");
+  spec_.normal.normalize();
+  if (!(spec_.boundary_spacing > 0.0)) throw std::invalid_argument("pressure probe: boundary spacing must be positive");
+  if (spec_.surface >= walls.surfaces().size()) throw std::invalid_argument("pressure probe: unknown surface");
+  if (!walls.surfaces()[spec_.surface].track_reaction)
+    throw std::invalid_argument("pressure probe: surface '" + walls.surfaces()[spec_.surface].name +
+                                "' does not track reactions");
+  const BoundaryParticles<D>& b = walls.particles();
+  for (std::size_t k = 0; k < b.size(); ++k) {
+    if (b.surface[k] != spec_.surface) continue;
+    if ((b.r[k] - spec_.point).norm() > spec_.radius) continue;
+    bool on_face = false;
+    for (std::uint32_t a = b.normal_begin[k]; a < b.normal_begin[k + 1]; ++a)
+      on_face = on_face || b.normals[a].dot(spec_.normal) > 0.99;
+    if (on_face) patch_.push_back(static_cast<std::uint32_t>(k));
+  }
+  if (patch_.empty()) throw std::invalid_argument("pressure probe: no boundary particle of the face within the radius");
+  patch_area_ = static_cast<double>(patch_.size()) * std::pow(spec_.boundary_spacing, D - 1);
+}
+
+template <int D>
+double PressureProbe<D>::readReaction(const Walls<D>& walls) const {
+  const BoundaryParticles<D>& b = walls.particles();
+  double push = 0.0;  // force of the fluid into the wall [N]
+  for (const std::uint32_t k : patch_) push -= b.reaction[k].dot(spec_.normal);
+  return push / patch_area_;
+}
+
+template <int D>
+double PressureProbe<D>::readReaction(const FluidSimulation<D>& sim) const {
+  if (!sim.walls()) throw std::invalid_argument("pressure probe: the simulation has no walls");
+  return readReaction(*sim.walls());
+}
+
+template <int D>
+double PressureProbe<D>::readInterpolated(const FluidSimulation<D>& sim) const {
+  const Vec<D> r0 = spec_.point + spec_.interpolation_offset * spec_.normal;
+  const NeighbourSearch<D>& search = sim.neighbours();
+  const CellGrid<D>& grid = search.grid();
+  const FluidParticles<D>& f = sim.fluid();
+  const Domain<D>& domain = sim.setup().domain;
+  const WendlandKernel<D>& kernel = sim.kernel();
+  const TaitEos& eos = sim.eos();
+  const double support2 = kernel.supportSquared();
+  double weighted = 0.0, weight = 0.0;
+  const auto add = [&](std::size_t j) {
+    const double r2 = domain.minimumImage(f.r[j] - r0).squaredNorm();
+    if (r2 >= support2) return;
+    const double w = kernel.value(std::sqrt(r2)) * f.m[j] / f.rho[j];
+    weighted += w * eos.pressure(f.rho[j]);
+    weight += w;
+  };
+  // The block of cells around r0 holds every particle within 2h of it (cells are
+  // 2h + skin wide; particles moved less than skin/2 since the last re-sort).
+  // Before the first step nothing is sorted by cell yet: scan every particle.
+  if (search.rebuildCount() == 0) {
+    for (std::size_t j = 0; j < f.size(); ++j) add(j);
+  } else {
+    const int cell = grid.cellOf(domain.wrap(r0));
+    for (const std::uint32_t* c = grid.neighbourCellsBegin(cell); c != grid.neighbourCellsEnd(cell); ++c)
+      for (std::uint32_t j = search.cellStart(static_cast<int>(*c)); j < search.cellStart(static_cast<int>(*c) + 1); ++j)
+        add(j);
+  }
+  if (weight <= 0.0) return 0.0;
+  const Vec<D> g = sim.setup().has("gravity") ? sim.setup().gravity : Vec<D>::Zero();
+  return weighted / weight - eos.rho0() * g.dot(r0 - spec_.point);
+}
+
+template class PressureProbe<2>;
+template class PressureProbe<3>;
+
+}  // namespace moorsph::fluid

@@ -1,0 +1,4 @@
+# Sensors: wave gauges (METHOD.md section 3) and wall pressure probes (section 2).
+target_sources(moorsph_fluid PRIVATE
+  ${CMAKE_CURRENT_LIST_DIR}/wave_gauge.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/pressure_probe.cpp)
