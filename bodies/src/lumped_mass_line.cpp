@@ -218,6 +218,34 @@ double LumpedMassLine::relax(double maxTime, double speedTolerance) {
   return t;
 }
 
+std::vector<double> LumpedMassLine::saveState() const {
+  std::vector<double> out;
+  out.reserve(6 * r_.size() + 2);
+  for (std::size_t i = 0; i < r_.size(); ++i) {
+    out.insert(out.end(), r_[i].data(), r_[i].data() + 3);
+    out.insert(out.end(), v_[i].data(), v_[i].data() + 3);
+  }
+  out.push_back(dissipated_);
+  out.push_back(endWork_);
+  return out;
+}
+
+void LumpedMassLine::restoreState(const std::vector<double>& state) {
+  const std::size_t nodes = static_cast<std::size_t>(p_.segments) + 1;
+  if (state.size() != 6 * nodes + 2) {
+    throw std::invalid_argument("lumped_mass: saved state does not match the number of segments");
+  }
+  r_.resize(nodes);
+  v_.resize(nodes);
+  for (std::size_t i = 0; i < nodes; ++i) {
+    r_[i] = Eigen::Vector3d(state[6 * i], state[6 * i + 1], state[6 * i + 2]);
+    v_[i] = Eigen::Vector3d(state[6 * i + 3], state[6 * i + 4], state[6 * i + 5]);
+  }
+  dissipated_ = state[6 * nodes];
+  endWork_ = state[6 * nodes + 1];
+  initialized_ = true;
+}
+
 std::vector<double> LumpedMassLine::segmentTensions() const {
   std::vector<double> t(p_.segments);
   for (int j = 0; j < p_.segments; ++j) t[j] = segmentTension(j, nullptr);

@@ -104,8 +104,8 @@ struct SystemCore {
   std::vector<SimTK::MobilizedBody> mobods;
   SimTK::Force::DiscreteForces external{forces, matter};
   SimTK::Force::DiscreteForces dynamicLineForces{forces, matter};
-  SimTK::Measure dissipatedEnergy;
-  SimTK::Measure externalWork;
+  SimTK::Measure::Integrate dissipatedEnergy;
+  SimTK::Measure::Integrate externalWork;
   std::unique_ptr<SimTK::Force::Gravity> gravity;
   std::unique_ptr<SimTK::CableTrackerSubsystem> cables;  // only when a cable_path exists
   std::string capturedOutput;

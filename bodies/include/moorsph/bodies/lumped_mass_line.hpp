@@ -71,6 +71,10 @@ class LumpedMassLine final : public MooringLine {
   /// `speedTolerance` (m/s) or `maxTime` (s) has passed; returns the time used.
   double relax(double maxTime, double speedTolerance = 1e-6);
 
+  /// Node positions and velocities, dissipated energy and end work, flattened.
+  std::vector<double> saveState() const override;
+  void restoreState(const std::vector<double>& state) override;
+
   double stableTimeStep() const { return stableStep_; }
   double timeStep() const { return dt_; }
   const std::vector<Eigen::Vector3d>& nodePositions() const { return r_; }

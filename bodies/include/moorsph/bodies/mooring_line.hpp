@@ -87,6 +87,11 @@ class MooringLine {
     (void)dt; (void)start; (void)end;
   }
 
+  /// Internal state of dynamic lines as plain numbers, for snapshots and checkpoints
+  /// (empty for stateless models).
+  virtual std::vector<double> saveState() const { return {}; }
+  virtual void restoreState(const std::vector<double>& state) { (void)state; }
+
   /// Tension above which the line breaks (N); infinity means unbreakable.
   double breakingLoad() const { return breakingLoad_; }
   void setBreakingLoad(double load) { breakingLoad_ = load; }

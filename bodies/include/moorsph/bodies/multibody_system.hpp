@@ -17,8 +17,10 @@
 #include <moorsph/bodies/body_types.hpp>
 #include <moorsph/bodies/mooring_line.hpp>
 
+#include <limits>
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace moorsph::bodies {
 
@@ -27,6 +29,25 @@ struct SystemOptions {
   double maxStep = 1.0e-3;     ///< largest internal integrator step, s
   double accuracy = 1.0e-8;    ///< relative accuracy of the error-controlled integrator
   double lineSyncStep = 1.0e-3;  ///< force exchange interval with dynamic lines, s
+};
+
+/// Everything needed to continue a run in another MultibodySystem built from the same
+/// scene (checkpoints, restarts, and variants that change a body's mass: Simbody cannot
+/// change a mass after the system is built, so such a variant builds a new system and
+/// restores the snapshot into it). Plain data, ground frame, SI.
+struct LineSnapshot {
+  bool broken = false;
+  double breakTime = std::numeric_limits<double>::quiet_NaN();
+  double cableDissipated = 0.0;       ///< J, cable_path lines
+  std::vector<double> internalState;  ///< MooringLine::saveState()
+};
+struct SystemSnapshot {
+  double time = 0.0;
+  std::vector<BodyKinematics> bodies;
+  std::vector<BodyWrench> wrenches;
+  std::vector<LineSnapshot> lines;
+  double dissipated = 0.0;    ///< line damper energy so far (excluding cable_path's own), J
+  double externalWork = 0.0;  ///< J
 };
 
 class MultibodySystem {
@@ -56,6 +77,12 @@ class MultibodySystem {
   BodyWrench externalWrench(int body) const;
   /// Advances until time() == t exactly (loops over the integrator's steps).
   void advanceTo(double t);
+  /// The current state as plain data.
+  SystemSnapshot snapshot() const;
+  /// Continues from a snapshot (after initialize(); same bodies and lines, masses may
+  /// differ). Time, poses, velocities, wrenches, line states and energy integrals are
+  /// restored; the integrator restarts from there.
+  void restore(const SystemSnapshot& snapshot);
 
   // ---- reading ----
   int bodyCount() const;
