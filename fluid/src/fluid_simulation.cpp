@@ -82,6 +82,7 @@ void FluidSimulation<D>::evaluateRates(double t, bool may_rebuild) {
   }
   FluidContext<D> ctx{fluid_, neighbours_, kernel_, eos_, setup_, t};
   pairs_->evaluate(ctx);
+  total_interactions_ += pairs_->lastInteractions();
   for (auto& e : effects_) e->addRates(ctx);
   rates_current_ = true;
 }

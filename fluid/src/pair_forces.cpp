@@ -2,6 +2,7 @@
 
 #include <stdexcept>
 #include <type_traits>
+#include <vector>
 #include <moorsph/fluid/pair_terms.hpp>
 
 namespace moorsph::fluid {
@@ -23,8 +24,19 @@ class PairForcesImpl final : public PairForces<D> {
     FluidParticles<D>& f = ctx.fluid;
     const std::size_t n = f.size();
     const TaitEos eos = ctx.eos;
+    // Per-particle quotients computed once, so the pair loop divides at most once a pair.
+    if (p_over_rho2_.size() != n) {
+      p_over_rho2_.resize(n);
+      inv_rho_.resize(n);
+      volume_.resize(n);
+    }
 #pragma omp parallel for schedule(static)
-    for (std::size_t i = 0; i < n; ++i) f.p[i] = eos.pressure(f.rho[i]);
+    for (std::size_t i = 0; i < n; ++i) {
+      f.p[i] = eos.pressure(f.rho[i]);
+      inv_rho_[i] = 1.0 / f.rho[i];
+      p_over_rho2_[i] = f.p[i] * inv_rho_[i] * inv_rho_[i];
+      volume_[i] = f.m[i] * inv_rho_[i];
+    }
     interactions_ = sumPairs(ctx);
   }
 
@@ -41,8 +53,10 @@ class PairForcesImpl final : public PairForces<D> {
     const auto* r = f.r.data();
     const auto* v = f.v.data();
     const double* rho = f.rho.data();
-    const double* p = f.p.data();
     const double* m = f.m.data();
+    const double* p_over_rho2 = p_over_rho2_.data();
+    const double* inv_rho = inv_rho_.data();
+    const double* volume = volume_.data();
     const std::size_t n = f.size();
     std::uint64_t interactions = 0;
 
@@ -51,7 +65,8 @@ class PairForcesImpl final : public PairForces<D> {
       const Vec<D> ri = r[i];
       const Vec<D> vi = v[i];
       const double rhoi = rho[i];
-      const double p_over_rho2_i = p[i] / (rhoi * rhoi);
+      const double p_over_rho2_i = p_over_rho2[i];
+      const double inv_rhoi = inv_rho[i];
       Vec<D> acc = Vec<D>::Zero();
       Vec<D> xsph_sum = Vec<D>::Zero();
       double xsph_weight = 0.0;
@@ -72,19 +87,19 @@ class PairForcesImpl final : public PairForces<D> {
         const Vec<D> vij = vi - v[j];
         const double vr = vij.dot(rij);
         const double mj = m[j];
-        const double rhoj = rho[j];
         drho += mj * vr * F;
-        double coef = p_over_rho2_i + p[j] / (rhoj * rhoj);
-        if constexpr (kViscosity) coef -= viscosity_.xi_mu_eff * vr / (rhoi * rhoj * (r2 + viscosity_.beta2));
+        double coef = p_over_rho2_i + p_over_rho2[j];
+        if constexpr (kViscosity)
+          coef -= viscosity_.xi_mu_eff * vr * inv_rhoi * inv_rho[j] / (r2 + viscosity_.beta2);
         acc -= (mj * coef * F) * rij;
         if constexpr (kXsph) {
-          const double w = alpha * t3 * t * (1.0 + 2.0 * q) * mj / rhoj;
+          const double w = alpha * t3 * t * (1.0 + 2.0 * q) * volume[j];
           xsph_sum += w * v[j];
           xsph_weight += w;
         }
         if constexpr (kDiffusion) {
-          const double jump = (rhoi - rhoj) - diffusion_.hydrostatic.dot(rij);
-          drho += diffusion_.coefficient * jump * F * r2 / (r2 + diffusion_.eta2) * mj / rhoj;
+          const double jump = (rhoi - rho[j]) - diffusion_.hydrostatic.dot(rij);
+          drho += diffusion_.coefficient * jump * F * r2 / (r2 + diffusion_.eta2) * volume[j];
         }
       }
       interactions += count;
@@ -92,7 +107,7 @@ class PairForcesImpl final : public PairForces<D> {
       f.drhodt[i] = drho;
       if constexpr (kXsph) {
         if (xsph_.form == XsphForm::Reference) {
-          const double self = kernel.valueAtZero() * m[i] / rhoi;  // the sum includes j = i
+          const double self = kernel.valueAtZero() * volume[i];  // the sum includes j = i
           f.drdt[i] = (1.0 - xsph_.eps) * vi + xsph_.eps * (xsph_sum + self * vi);
         } else {
           f.drdt[i] = vi + xsph_.eps * (xsph_sum - xsph_weight * vi);
@@ -109,6 +124,7 @@ class PairForcesImpl final : public PairForces<D> {
   Xsph xsph_;
   Diffusion diffusion_;
   std::uint64_t interactions_ = 0;
+  std::vector<double> p_over_rho2_, inv_rho_, volume_;
 };
 
 // Compile-time composition: pick each term's type from the scene's list, one branch

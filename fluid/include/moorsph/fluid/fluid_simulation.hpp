@@ -76,6 +76,8 @@ class FluidSimulation {
   std::vector<std::string> effectNames() const;
   /// Fluid-fluid pairs within 2h evaluated by the last rate evaluation.
   std::uint64_t lastInteractions() const { return pairs_->lastInteractions(); }
+  /// Fluid-fluid pairs within 2h evaluated since construction (two evaluations a step).
+  std::uint64_t totalInteractions() const { return total_interactions_; }
   FluidEnergy calcEnergy() const;
 
  private:
@@ -100,6 +102,7 @@ class FluidSimulation {
   double cfl_dt_ = 0.0;
   std::size_t steps_ = 0;
   bool rates_current_ = false;
+  std::uint64_t total_interactions_ = 0;
 };
 
 }  // namespace moorsph::fluid

@@ -6,7 +6,7 @@
 namespace moorsph::fluid {
 
 template <int D>
-class Gravity final : public FluidEffect<D>, Counted<Gravity<D>> {
+class Gravity final : public FluidEffect<D>, public Counted<Gravity<D>> {
  public:
   explicit Gravity(const Vec<D>& g) : g_(g) {}
   const char* name() const override { return "gravity"; }

@@ -36,7 +36,7 @@ struct SurfaceWrench {
 };
 
 template <int D>
-class Walls final : public FluidEffect<D>, Counted<Walls<D>> {
+class Walls final : public FluidEffect<D>, public Counted<Walls<D>> {
  public:
   Walls(BoundaryGeometry<D> geometry, const FluidSetup<D>& setup);
 
