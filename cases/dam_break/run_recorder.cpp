@@ -27,6 +27,12 @@ void RunRecorder<D>::record() {
   if (sim_.stepCount() == 0) summary_.initial_energy = e.total();
   summary_.max_energy_rise = std::max(summary_.max_energy_rise, e.total() - summary_.initial_energy);
   summary_.final_energy = e.total();
+  if (timing_series_ < 0) {
+    std::vector<io::SeriesColumn> columns;
+    for (const auto& name : sim_.phaseTimers().names()) columns.push_back({name, "s"});
+    timing_series_ = file_.addSeries("timing", columns, "accumulated wall time per phase of the step");
+  }
+  file_.append(timing_series_, sim_.time(), sim_.phaseTimers().seconds());
   file_.append(energy_series_, sim_.time(),
                {e.kinetic, e.potential, e.elastic, e.total(), sim_.lastDt(), static_cast<double>(sim_.stepCount()), wall});
   for (auto& p : probes_) file_.append(p.handle, sim_.time(), p.probe(sim_));

@@ -35,6 +35,11 @@ FluidSimulation<D>::FluidSimulation(FluidSetup<D> setup, FluidParticles<D> fluid
   checkSetup(setup_.effects);
   pairs_ = makePairForces(setup_);
   buildEffects(std::move(boundary));
+  phase_neighbours_ = timers_.add("neighbours");
+  phase_pairs_ = timers_.add("pairs");
+  for (const auto& e : effects_) phase_effects_.push_back(timers_.add(e->name()));
+  phase_integrate_ = timers_.add("integrate");
+  phase_checks_ = timers_.add("checks");
   fluid_.allocateWorkArrays();
   const double visc_speed = 2.0 * setup_.method.viscosity_xi * setup_.mu / (setup_.h() * setup_.rho0);
   cfl_dt_ = setup_.method.cfl * setup_.h() / (setup_.sound_speed + visc_speed);
@@ -54,6 +59,7 @@ void FluidSimulation<D>::buildEffects(BoundaryGeometry<D> boundary) {
 
 template <int D>
 void FluidSimulation<D>::addEffect(std::unique_ptr<FluidEffect<D>> effect) {
+  phase_effects_.push_back(timers_.add(effect->name()));
   effects_.push_back(std::move(effect));
   rates_current_ = false;
 }
@@ -71,6 +77,7 @@ template <int D>
 void FluidSimulation<D>::evaluateRates(double t, bool may_rebuild) {
   const BoundaryParticles<D>* boundary = walls_ ? &walls_->particles() : nullptr;
   if (may_rebuild) {
+    PhaseTimers::Scope timing(timers_, phase_neighbours_);
     double vmax2 = 0.0;
     const std::size_t n = fluid_.size();
 #pragma omp parallel for schedule(static) reduction(max : vmax2)
@@ -81,9 +88,15 @@ void FluidSimulation<D>::evaluateRates(double t, bool may_rebuild) {
       neighbours_.rebuild(fluid_, boundary, walls_ ? walls_->trackedMask() : no_tracking_);
   }
   FluidContext<D> ctx{fluid_, neighbours_, kernel_, eos_, setup_, t};
-  pairs_->evaluate(ctx);
+  {
+    PhaseTimers::Scope timing(timers_, phase_pairs_);
+    pairs_->evaluate(ctx);
+  }
   total_interactions_ += pairs_->lastInteractions();
-  for (auto& e : effects_) e->addRates(ctx);
+  for (std::size_t k = 0; k < effects_.size(); ++k) {
+    PhaseTimers::Scope timing(timers_, phase_effects_[k]);
+    effects_[k]->addRates(ctx);
+  }
   rates_current_ = true;
 }
 
@@ -135,15 +148,24 @@ void FluidSimulation<D>::step() {
   }
   const double dt = computeDt();
   const double predicted_dt = setup_.method.predictor_fraction * dt;
-  predict(predicted_dt);
+  {
+    PhaseTimers::Scope timing(timers_, phase_integrate_);
+    predict(predicted_dt);
+  }
   for (auto& e : effects_) e->advanceTo(time_ + predicted_dt);
   evaluateRates(time_ + predicted_dt, false);
-  correct(dt);
+  {
+    PhaseTimers::Scope timing(timers_, phase_integrate_);
+    correct(dt);
+  }
   time_ += dt;
   dt_ = dt;
   ++steps_;
   for (auto& e : effects_) e->advanceTo(time_);
-  checkHealth();
+  {
+    PhaseTimers::Scope timing(timers_, phase_checks_);
+    checkHealth();
+  }
   evaluateRates(time_, true);  // the rates that start the next step (and set its dt)
 }
 

@@ -43,6 +43,7 @@ class RunRecorder {
   io::SeriesFile& file_;
   double interval_;
   int energy_series_;
+  int timing_series_ = -1;
   struct Entry {
     int handle;
     Probe probe;

@@ -21,6 +21,7 @@
 #include <vector>
 #include <moorsph/fluid/fluid_effect.hpp>
 #include <moorsph/fluid/pair_forces.hpp>
+#include <moorsph/fluid/phase_timers.hpp>
 #include <moorsph/fluid/walls.hpp>
 
 namespace moorsph::fluid {
@@ -79,6 +80,8 @@ class FluidSimulation {
   /// Fluid-fluid pairs within 2h evaluated since construction (two evaluations a step).
   std::uint64_t totalInteractions() const { return total_interactions_; }
   FluidEnergy calcEnergy() const;
+  /// Wall time per phase: neighbours, pairs, one per effect, integrate, checks.
+  const PhaseTimers& phaseTimers() const { return timers_; }
 
  private:
   void buildEffects(BoundaryGeometry<D> boundary);
@@ -103,6 +106,9 @@ class FluidSimulation {
   std::size_t steps_ = 0;
   bool rates_current_ = false;
   std::uint64_t total_interactions_ = 0;
+  PhaseTimers timers_;
+  int phase_neighbours_ = 0, phase_pairs_ = 0, phase_integrate_ = 0, phase_checks_ = 0;
+  std::vector<int> phase_effects_;
 };
 
 }  // namespace moorsph::fluid
