@@ -84,8 +84,9 @@ void FluidSimulation<D>::evaluateRates(double t, bool may_rebuild) {
     for (std::size_t i = 0; i < n; ++i) vmax2 = std::max(vmax2, fluid_.v[i].squaredNorm());
     // Travel bound for the coming step; XSPH can exceed |v| a little, hence the margin.
     const double travel = 1.5 * std::sqrt(vmax2) * cfl_dt_;
-    if (neighbours_.needsRebuild(fluid_, boundary, travel))
+    if (rebuild_requested_ || neighbours_.needsRebuild(fluid_, boundary, travel))
       neighbours_.rebuild(fluid_, boundary, walls_ ? walls_->trackedMask() : no_tracking_);
+    rebuild_requested_ = false;
   }
   FluidContext<D> ctx{fluid_, neighbours_, kernel_, eos_, setup_, t};
   {

@@ -54,6 +54,20 @@ class FluidSimulation {
   /// Step until time() >= t (the last step is not shortened).
   void advanceTo(double t);
 
+  /// Rebuild (and re-sort) the neighbour lists at the end of the next step, before the
+  /// rates that start the following step are evaluated. A checkpoint written right after
+  /// such a step restarts bit-identically: a restarted run also builds its lists from
+  /// the saved (sorted) positions before its first evaluation.
+  void requestNeighbourRebuild() { rebuild_requested_ = true; }
+  /// Set the clock of a run restored from a checkpoint (the particles were passed to
+  /// the constructor in their saved order).
+  void restoreClock(double time, std::size_t steps, double last_dt) {
+    time_ = time;
+    steps_ = steps;
+    dt_ = last_dt;
+    rates_current_ = false;
+  }
+
   /// Add an effect built outside (e.g. by coupling/ or io/); it runs after the built-in ones.
   void addEffect(std::unique_ptr<FluidEffect<D>> effect);
 
@@ -105,6 +119,7 @@ class FluidSimulation {
   double cfl_dt_ = 0.0;
   std::size_t steps_ = 0;
   bool rates_current_ = false;
+  bool rebuild_requested_ = false;
   std::uint64_t total_interactions_ = 0;
   PhaseTimers timers_;
   int phase_neighbours_ = 0, phase_pairs_ = 0, phase_integrate_ = 0, phase_checks_ = 0;
