@@ -17,7 +17,7 @@ constexpr double kPi = 3.14159265358979323846;
 
 LumpedMassLine::LumpedMassLine(const LumpedMassParams& params) : p_(params) {
   if (!(p_.length > 0.0) || p_.segments < 1 || !(p_.massPerLength > 0.0) || !(p_.diameter >= 0.0) ||
-      !(p_.axialStiffness > 0.0) || !(p_.internalDamping >= 0.0) || !(p_.gravity.norm() > 0.0) ||
+      !(p_.axialStiffness > 0.0) || !(p_.internalDamping >= 0.0) || !(p_.bendingStiffness >= 0.0) || !(p_.gravity.norm() > 0.0) ||
       !(p_.timeStep >= 0.0) || !(p_.seabedFriction >= 0.0)) {
     throw std::invalid_argument(
         "lumped_mass: need length > 0 m, segments >= 1, mass per length > 0 kg/m, diameter >= 0 m, "
@@ -30,12 +30,14 @@ LumpedMassLine::LumpedMassLine(const LumpedMassParams& params) : p_(params) {
   }
   area_ = 0.25 * kPi * p_.diameter * p_.diameter;
   nodeMass_ = p_.massPerLength * segLength_;
-  netWeight_ = (p_.massPerLength - p_.waterDensity * area_) * segLength_;  // kg of net weight per node
+  netWeight_ = (p_.massPerLength - p_.waterDensity * area_) * segLength_;  // kg of net weight per (wet) node
 
   // Stability of semi-implicit Euler for the stiffest, most damped local mode
   // x'' + gamma x' + omega^2 x = 0: omega^2 dt^2 + 2 gamma dt < 4. Use half the limit.
   const double kSeg = p_.axialStiffness / segLength_, cSeg = p_.internalDamping / segLength_;
   double omega2 = 4.0 * kSeg / nodeMass_, gamma = 4.0 * cSeg / nodeMass_;
+  // Zig-zag bending mode: alternate nodes +-d turn each joint by ~4d/l.
+  omega2 += 64.0 * p_.bendingStiffness / (nodeMass_ * segLength_ * segLength_ * segLength_);
   if (p_.seabed) {
     omega2 += p_.seabedStiffness * p_.diameter * segLength_ / nodeMass_;
     gamma += p_.seabedDamping * p_.diameter * segLength_ / nodeMass_;
@@ -107,7 +109,8 @@ double LumpedMassLine::segmentTension(int j, double* dampingPower) const {
 void LumpedMassLine::computeAccelerations(std::vector<Eigen::Vector3d>& acc, double extraDamping,
                                           double* dissipation, double* endPower) const {
   const int n = p_.segments;
-  std::vector<Eigen::Vector3d> force(n + 1, Eigen::Vector3d::Zero());
+  std::vector<Eigen::Vector3d>& force = scratchForce_;  // no allocation per step
+  force.assign(n + 1, Eigen::Vector3d::Zero());
   double damping = 0.0;
   for (int j = 0; j < n; ++j) {
     const Eigen::Vector3d d = r_[j + 1] - r_[j];
@@ -118,6 +121,7 @@ void LumpedMassLine::computeAccelerations(std::vector<Eigen::Vector3d>& acc, dou
       force[j + 1] -= f;
     }
   }
+  addBendingForces(force);
   if (endPower) {
     // Power the moving ends put into the line: minus the line's force on them, times
     // their velocity.
@@ -126,12 +130,13 @@ void LumpedMassLine::computeAccelerations(std::vector<Eigen::Vector3d>& acc, dou
   double power = -damping;  // damping accumulates -(dissipated power)
   const double rho = p_.waterDensity, d = p_.diameter, l = segLength_;
   for (int i = 1; i < n; ++i) {
-    Eigen::Vector3d f = force[i] + netWeight_ * p_.gravity;
+    const double wet = wetFraction(i);
+    Eigen::Vector3d f = force[i] + (nodeMass_ - wet * rho * area_ * l) * p_.gravity;
     const Eigen::Vector3d q = (r_[i + 1] - r_[i - 1]).normalized();
     const Eigen::Vector3d& v = v_[i];
     const Eigen::Vector3d vt = v.dot(q) * q, vn = v - vt;
-    const Eigen::Vector3d drag = -0.5 * rho * d * l * p_.cdNormal * vn.norm() * vn -
-                                 0.5 * rho * kPi * d * l * p_.cdAxial * vt.norm() * vt;
+    const Eigen::Vector3d drag = -wet * (0.5 * rho * d * l * p_.cdNormal * vn.norm() * vn +
+                                         0.5 * rho * kPi * d * l * p_.cdAxial * vt.norm() * vt);
     f += drag;
     power += drag.dot(v);
     if (p_.seabed) {
@@ -153,14 +158,72 @@ void LumpedMassLine::computeAccelerations(std::vector<Eigen::Vector3d>& acc, dou
       }
     }
     if (extraDamping > 0.0) f -= extraDamping * nodeMass_ * v;
-    Eigen::Matrix3d mass = nodeMass_ * Eigen::Matrix3d::Identity();
-    if (p_.caNormal != 0.0 || p_.caAxial != 0.0) {
-      const Eigen::Matrix3d qq = q * q.transpose();
-      mass += rho * area_ * l * (p_.caNormal * (Eigen::Matrix3d::Identity() - qq) + p_.caAxial * qq);
-    }
-    acc[i] = mass.inverse() * f;
+    // M = a I + b q q^T (isotropic mass plus normal/axial added mass), inverted in
+    // closed form: M^-1 = I/a - b/(a (a + b)) q q^T.
+    const double added = wet * rho * area_ * l;
+    const double a = nodeMass_ + added * p_.caNormal, b = added * (p_.caAxial - p_.caNormal);
+    acc[i] = f / a - (b / (a * (a + b)) * q.dot(f)) * q;
   }
   if (dissipation) *dissipation = -power;
+}
+
+// Bending: U = sum over internal nodes EI/(2 l) |q_b - q_a|^2, forces = -grad U, with
+// d q / d d = (I - q q^T)/|d| for a segment vector d and its unit vector q.
+void LumpedMassLine::addBendingForces(std::vector<Eigen::Vector3d>& force) const {
+  if (p_.bendingStiffness <= 0.0) return;
+  const double c = p_.bendingStiffness / segLength_;
+  for (int i = 1; i < p_.segments; ++i) {
+    const Eigen::Vector3d da = r_[i] - r_[i - 1], db = r_[i + 1] - r_[i];
+    const double la = da.norm(), lb = db.norm();
+    const Eigen::Vector3d qa = da / la, qb = db / lb, g = qb - qa;
+    const Eigen::Vector3d dUdb = c * (g - qb * qb.dot(g)) / lb;   // dU/d(db)
+    const Eigen::Vector3d dUda = -c * (g - qa * qa.dot(g)) / la;  // dU/d(da)
+    force[i + 1] -= dUdb;
+    force[i] += dUdb - dUda;
+    force[i - 1] += dUda;
+  }
+}
+
+// Fraction of the line represented by node i (half of each adjacent segment) that lies
+// below the water surface, from the straight half segments' heights.
+double LumpedMassLine::wetFraction(int i) const {
+  if (!std::isfinite(p_.waterSurfaceHeight)) return 1.0;
+  const double s = p_.waterSurfaceHeight;
+  auto below = [s](double h1, double h2) {  // submerged fraction of a straight piece
+    const double lo = std::min(h1, h2), hi = std::max(h1, h2);
+    if (hi <= s) return 1.0;
+    if (lo >= s) return 0.0;
+    return (s - lo) / (hi - lo);
+  };
+  const double h = r_[i].dot(up_);
+  double sum = 0.0;
+  int halves = 0;
+  if (i > 0) sum += below(h, 0.5 * (h + r_[i - 1].dot(up_))), ++halves;
+  if (i < p_.segments) sum += below(h, 0.5 * (h + r_[i + 1].dot(up_))), ++halves;
+  return sum / halves;
+}
+
+// Work done by the buoyancy rho A l |g| f(h) when a node rises to height h: its
+// potential is minus this, and with f = 1 it is rho A l |g| h.
+double LumpedMassLine::buoyancyPotential(const Eigen::Vector3d& r) const {
+  const double b = p_.waterDensity * area_ * segLength_ * p_.gravity.norm();
+  const double h = r.dot(up_);
+  if (!std::isfinite(p_.waterSurfaceHeight)) return b * h;
+  const double lo = p_.waterSurfaceHeight - 0.5 * segLength_, hi = p_.waterSurfaceHeight + 0.5 * segLength_;
+  if (h <= lo) return b * h;
+  const double top = std::min(h, hi);
+  // integral of f(s) = (S - s)/l + 1/2 from lo to top
+  const double ramp = ((p_.waterSurfaceHeight + 0.5 * segLength_) * (top - lo) - 0.5 * (top * top - lo * lo)) / segLength_;
+  return b * (lo + ramp);
+}
+
+double LumpedMassLine::bendingEnergy() const {
+  double e = 0.0;
+  for (int i = 1; i < p_.segments && p_.bendingStiffness > 0.0; ++i) {
+    const Eigen::Vector3d g = (r_[i + 1] - r_[i]).normalized() - (r_[i] - r_[i - 1]).normalized();
+    e += 0.5 * p_.bendingStiffness / segLength_ * g.squaredNorm();
+  }
+  return e;
 }
 
 void LumpedMassLine::advance(double dt, const LineEnds& start, const LineEnds& end) {
@@ -256,11 +319,11 @@ LineForces LumpedMassLine::calcForces(const LineEnds& ends) const {
   (void)ends;  // the line's own end nodes are the attachment points
   LineForces out;
   const int n = p_.segments;
-  const Eigen::Vector3d halfWeight = 0.5 * netWeight_ * p_.gravity;
+  const double buoyancy = p_.waterDensity * area_ * segLength_;
   const double tTop = segmentTension(n - 1, nullptr), tBottom = segmentTension(0, nullptr);
   const Eigen::Vector3d eTop = (r_[n] - r_[n - 1]).normalized(), eBottom = (r_[1] - r_[0]).normalized();
-  out.onFairlead = -tTop * eTop + halfWeight;
-  out.onAnchor = tBottom * eBottom + halfWeight;
+  out.onFairlead = -tTop * eTop + 0.5 * (nodeMass_ - wetFraction(n) * buoyancy) * p_.gravity;
+  out.onAnchor = tBottom * eBottom + 0.5 * (nodeMass_ - wetFraction(0) * buoyancy) * p_.gravity;
   out.fairleadTension = out.onFairlead.norm();
   out.anchorTension = out.onAnchor.norm();
   out.slack = tTop == 0.0;
@@ -273,7 +336,8 @@ double LumpedMassLine::kineticEnergy() const {
     const Eigen::Vector3d q = (r_[i + 1] - r_[i - 1]).normalized();
     Eigen::Matrix3d mass = nodeMass_ * Eigen::Matrix3d::Identity();
     const Eigen::Matrix3d qq = q * q.transpose();
-    mass += p_.waterDensity * area_ * segLength_ * (p_.caNormal * (Eigen::Matrix3d::Identity() - qq) + p_.caAxial * qq);
+    mass += wetFraction(i) * p_.waterDensity * area_ * segLength_ *
+            (p_.caNormal * (Eigen::Matrix3d::Identity() - qq) + p_.caAxial * qq);
     e += 0.5 * v_[i].dot(mass * v_[i]);
   }
   return e;
@@ -281,13 +345,14 @@ double LumpedMassLine::kineticEnergy() const {
 
 double LumpedMassLine::calcPotentialEnergy(const LineEnds& ends) const {
   (void)ends;
-  double e = 0.0;
+  double e = bendingEnergy();
   for (int j = 0; j < p_.segments; ++j) {
     const double strain = (r_[j + 1] - r_[j]).norm() / segLength_ - 1.0;
     if (strain > 0.0) e += 0.5 * p_.axialStiffness * strain * strain * segLength_;
   }
   for (int i = 1; i < p_.segments; ++i) {
-    e -= netWeight_ * p_.gravity.dot(r_[i] - r_[0]);
+    e -= nodeMass_ * p_.gravity.dot(r_[i] - r_[0]);
+    e -= buoyancyPotential(r_[i]) - buoyancyPotential(r_[0]);
     if (p_.seabed) {
       const double penetration = -(r_[i] - p_.seabedPoint).dot(up_);
       if (penetration > 0.0) e += 0.5 * p_.seabedStiffness * p_.diameter * segLength_ * penetration * penetration;

@@ -67,6 +67,8 @@ std::unique_ptr<MooringLine> makeMooringLine(const MooringLineParams& p) {
     l.massPerLength = require(p.massPerLength, "lumped_mass", "mass_per_length");
     l.diameter = p.diameter;
     l.waterDensity = p.waterDensity;
+    l.waterSurfaceHeight = p.waterSurfaceHeight;
+    l.bendingStiffness = p.bendingStiffness;
     l.gravity = p.gravity;
     l.segments = p.segments;
     l.internalDampingRatio = p.internalDampingRatio;

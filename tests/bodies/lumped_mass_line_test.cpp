@@ -123,13 +123,14 @@ TEST(LumpedMassLine, StaticShapeConvergesToTheCatenaryAsSegmentsIncrease) {
 TEST(LumpedMassLine, LoweLangleyJumperStaticTopForceWithinTwoPercent) {
   // refdata/lowe_langley_2006_jumper: 165 kg/m, d 0.396 m, EA 500e6 N, L 170 m, 68
   // segments, bottom (-100, 0, -55), top (0, 0, -5), water 1000 kg/m^3, depth 100 m,
-  // g 9.807. Reference top force (11.40, 0, 45.71) kN (bending stiffness neglected here).
+  // g 9.807, EI 120.8e3 N m^2. Reference top force (11.40, 0, 45.71) kN.
   mb::LumpedMassParams p;
   p.length = 170.0;
   p.segments = 68;
   p.massPerLength = 165.0;
   p.diameter = 0.396;
   p.axialStiffness = 500e6;
+  p.bendingStiffness = 120.8e3;
   p.cdNormal = 1.0;
   p.caNormal = 1.0;
   p.waterDensity = 1000.0;
@@ -152,10 +153,11 @@ TEST(LumpedMassLine, LoweLangleyJumperStaticTopForceWithinTwoPercent) {
 TEST(LumpedMassLine, EnergyBalanceWithDragDampingSeabedAndMovingEnd) {
   // From the relaxed shape, the fairlead is moved smoothly by a few metres: kinetic +
   // potential + dissipated (drag, internal damping, seabed damper and friction) - work
-  // of the moving ends must stay constant. Semi-implicit Euler makes the balance close
+  // of the moving ends must stay constant (bending energy included). Semi-implicit Euler makes the balance close
   // to first order in the step, so the test asks for 0.5 % of the energy throughput.
   mb::LumpedMassParams p = chain(120.0, 24);
   p.internalDamping = 2e6;  // about 25 % of critical for the segment axial mode
+  p.bendingStiffness = 2e6; // N m^2: bending forces must be the gradient of bending energy
   p.seabedFriction = 0.3;
   p.relaxationTime = 100.0;
   p.relaxationDamping = 0.5;

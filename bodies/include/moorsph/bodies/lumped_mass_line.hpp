@@ -6,7 +6,11 @@
 // N segments of unstretched length l = L/N join N+1 nodes; node 0 is the anchor, node
 // N the fairlead, both moved kinematically; the N-1 internal nodes carry the state.
 //  - segment tension (tension only): T = EA e + BA de/dt for e = |dr|/l - 1 > 0, T >= 0
-//  - net weight per node: (m - rho_w A) l g, A = pi d^2/4 (d volumetric diameter)
+//  - optional bending at internal nodes from the energy EI/(2 l) |q_b - q_a|^2 (q_a, q_b
+//    the unit vectors of the adjacent segments; |q_b - q_a| ~ the turning angle, so
+//    this is EI kappa^2 l / 2 with kappa = angle / l); pinned ends carry no moment
+//  - net weight per node: (m - f rho_w A) l g, A = pi d^2/4 (d volumetric diameter), f the
+//    wet fraction of the node's two half segments (drag and added mass x f too)
 //  - Morison drag per node, node tangent q: F = -1/2 rho_w d l Cdn |v_n| v_n
 //    - 1/2 rho_w pi d l Cdt |v_t| v_t (still water)
 //  - node mass matrix: m l I + rho_w A l [Ca (I - q q^T) + CaAx q q^T]
@@ -34,6 +38,7 @@ struct LumpedMassParams {
   double massPerLength = 0.0;    ///< m, kg/m (in air)
   double diameter = 0.0;         ///< volumetric diameter d, m
   double axialStiffness = 0.0;   ///< EA, N
+  double bendingStiffness = 0.0; ///< EI, N m^2 (0: a perfectly flexible line)
   double internalDamping = 0.0;  ///< BA, N s
   /// If > 0, sets BA = 2 zeta l sqrt(EA m): zeta is the damping ratio of one segment's
   /// axial spring on its node mass (1 = critical). Axial ringing from the lumped
@@ -42,6 +47,10 @@ struct LumpedMassParams {
   double cdNormal = 0.0, cdAxial = 0.0;  ///< drag coefficients, -
   double caNormal = 0.0, caAxial = 0.0;  ///< added-mass coefficients, -
   double waterDensity = 1025.0;  ///< kg/m^3
+  /// Height of the still water surface along "up" (m): buoyancy, drag and added mass
+  /// act on the submerged part of the line only (per node, the wet fraction of its two
+  /// half segments). Infinity: always submerged.
+  double waterSurfaceHeight = std::numeric_limits<double>::infinity();
   Eigen::Vector3d gravity{0.0, -9.81, 0.0};  ///< m/s^2 (its direction defines "up")
   bool seabed = true;            ///< contact with the plane through seabedPoint
   /// A point of the seabed plane; NaN: the anchor's initial position.
@@ -93,12 +102,17 @@ class LumpedMassLine final : public MooringLine {
   void computeAccelerations(std::vector<Eigen::Vector3d>& acc, double extraDamping, double* dissipation,
                             double* endPower) const;
   double segmentTension(int j, double* dampingPower) const;
+  void addBendingForces(std::vector<Eigen::Vector3d>& force) const;
+  double bendingEnergy() const;
+  double wetFraction(int node) const;
+  double buoyancyPotential(const Eigen::Vector3d& r) const;
 
   LumpedMassParams p_;
   Eigen::Vector3d up_;
   double segLength_ = 0.0, nodeMass_ = 0.0, netWeight_ = 0.0, area_ = 0.0;
   double stableStep_ = 0.0, dt_ = 0.0, frictionSlope_ = 0.0;
   std::vector<Eigen::Vector3d> r_, v_;
+  mutable std::vector<Eigen::Vector3d> scratchForce_;
   double dissipated_ = 0.0, endWork_ = 0.0;
   bool initialized_ = false;
 };

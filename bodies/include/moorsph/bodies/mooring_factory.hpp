@@ -29,9 +29,11 @@ struct MooringLineParams {
   // Line description (elastic_catenary, lumped_mass).
   double length = std::numeric_limits<double>::quiet_NaN();  ///< unstretched L, m
   double axialStiffness = std::numeric_limits<double>::quiet_NaN();  ///< EA, N
+  double bendingStiffness = 0.0;  ///< EI, N m^2 (lumped_mass)
   double massPerLength = std::numeric_limits<double>::quiet_NaN();   ///< kg/m in air
   double diameter = 0.0;          ///< volumetric diameter, m
   double waterDensity = 1025.0;   ///< kg/m^3
+  double waterSurfaceHeight = std::numeric_limits<double>::infinity();  ///< lumped_mass, m along up
   Eigen::Vector3d gravity{0.0, -9.81, 0.0};  ///< m/s^2
   double seabedFriction = 0.0;    ///< -
   bool anchorOnSeabed = true;     ///< elastic_catenary; lumped_mass seabed contact
