@@ -83,7 +83,9 @@ void FluidSimulation<D>::evaluateRates(double t, bool may_rebuild) {
 #pragma omp parallel for schedule(static) reduction(max : vmax2)
     for (std::size_t i = 0; i < n; ++i) vmax2 = std::max(vmax2, fluid_.v[i].squaredNorm());
     // Travel bound for the coming step; XSPH can exceed |v| a little, hence the margin.
-    const double travel = 1.5 * std::sqrt(vmax2) * cfl_dt_;
+    // Moving surfaces add their own speed (two particles approach at most at the sum).
+    const double wall_speed = walls_ ? walls_->maxMovingSpeed() : 0.0;
+    const double travel = 1.5 * (std::sqrt(vmax2) + wall_speed) * cfl_dt_;
     if (rebuild_requested_ || neighbours_.needsRebuild(fluid_, boundary, travel))
       neighbours_.rebuild(fluid_, boundary, walls_ ? walls_->trackedMask() : no_tracking_);
     rebuild_requested_ = false;

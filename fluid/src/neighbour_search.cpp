@@ -23,7 +23,9 @@ bool NeighbourSearch<D>::needsRebuild(const FluidParticles<D>& fluid, const Boun
   double max_boundary2 = 0.0;
   if (boundary) {
     if (boundary_at_build_.size() != boundary->size()) return true;
-    for (std::size_t k = 0; k < boundary->size(); ++k)
+    const std::size_t nb = boundary->size();
+#pragma omp parallel for schedule(static) reduction(max : max_boundary2)
+    for (std::size_t k = 0; k < nb; ++k)
       max_boundary2 = std::max(max_boundary2, domain_.minimumImage(boundary->r[k] - boundary_at_build_[k]).squaredNorm());
   }
   // Two particles approach each other by at most the sum of their travels.

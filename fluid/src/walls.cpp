@@ -1,6 +1,8 @@
 #include <moorsph/fluid/walls.hpp>
 
+#include <algorithm>
 #include <stdexcept>
+#include <string>
 
 namespace moorsph::fluid {
 
@@ -16,6 +18,71 @@ Walls<D>::Walls(BoundaryGeometry<D> geometry, const FluidSetup<D>& setup)
     tracked_[k] = geometry_.surfaces[s].track_reaction ? 1 : 0;
     any_tracked_ = any_tracked_ || tracked_[k];
   }
+  findSurfaceRanges();
+  const BoundaryParticles<D>& b = geometry_.particles;
+  for (std::size_t s = 0; s < geometry_.surfaces.size(); ++s) {
+    if (!geometry_.surfaces[s].movable) continue;
+    MovableSurface m;
+    m.surface = s;
+    const Vec<D> origin = geometry_.surfaces[s].reference_point.template head<D>();
+    m.motion.position = origin;
+    for (std::size_t k = ranges_[s].first; k < ranges_[s].second; ++k) {
+      m.reference_r.push_back(b.r[k] - origin);
+      m.radius = std::max(m.radius, m.reference_r.back().norm());
+      for (std::uint32_t a = b.normal_begin[k]; a < b.normal_begin[k + 1]; ++a) m.reference_normals.push_back(b.normals[a]);
+    }
+    movable_.push_back(std::move(m));
+  }
+}
+
+// Surfaces are appended whole (BoundaryGeometry::addSurface), so each is one range.
+template <int D>
+void Walls<D>::findSurfaceRanges() {
+  const auto& surface = geometry_.particles.surface;
+  ranges_.assign(geometry_.surfaces.size(), {0, 0});
+  std::vector<char> seen(geometry_.surfaces.size(), 0);
+  for (std::size_t k = 0; k < surface.size();) {
+    const std::size_t s = surface[k];
+    if (seen[s]) throw std::invalid_argument("boundary particles of surface '" + geometry_.surfaces[s].name + "' are not contiguous");
+    seen[s] = 1;
+    std::size_t end = k;
+    while (end < surface.size() && surface[end] == s) ++end;
+    ranges_[s] = {k, end};
+    k = end;
+  }
+}
+
+template <int D>
+void Walls<D>::setSurfaceMotion(std::size_t surface, const RigidMotion<D>& motion) {
+  for (MovableSurface& m : movable_) {
+    if (m.surface != surface) continue;
+    m.motion = motion;
+    BoundaryParticles<D>& b = geometry_.particles;
+    const auto [first, last] = ranges_[surface];
+    std::size_t normal = 0;
+    for (std::size_t k = first; k < last; ++k) {
+      b.r[k] = motion.position + motion.rotation * m.reference_r[k - first];
+      for (std::uint32_t a = b.normal_begin[k]; a < b.normal_begin[k + 1]; ++a)
+        b.normals[a] = motion.rotation * m.reference_normals[normal++];
+    }
+    return;
+  }
+  throw std::invalid_argument("surface " + std::to_string(surface) + " is not movable");
+}
+
+template <int D>
+const RigidMotion<D>& Walls<D>::surfaceMotion(std::size_t surface) const {
+  for (const MovableSurface& m : movable_)
+    if (m.surface == surface) return m.motion;
+  throw std::invalid_argument("surface " + std::to_string(surface) + " is not movable");
+}
+
+template <int D>
+double Walls<D>::maxMovingSpeed() const {
+  double speed = 0.0;
+  for (const MovableSurface& m : movable_)
+    speed = std::max(speed, m.motion.velocity.norm() + m.motion.angular_velocity.norm() * m.radius);
+  return speed;
 }
 
 template <int D>

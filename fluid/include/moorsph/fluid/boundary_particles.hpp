@@ -47,6 +47,12 @@ struct BoundaryParticles {
 struct SurfaceInfo {
   std::string name;
   bool track_reaction = false;  ///< compute per-particle reactions (bodies, sensors)
+  /// Moved rigidly during the run (a piston, a body). Only movable surfaces keep
+  /// body-frame reference coordinates; static walls cost nothing extra.
+  bool movable = false;
+  /// Reference point of a movable surface at t = 0 [m] (only the first D components are
+  /// used): body-frame coordinates are measured from it, and motions place it.
+  Eigen::Vector3d reference_point = Eigen::Vector3d::Zero();
 };
 
 }  // namespace moorsph::fluid

@@ -9,6 +9,7 @@
 #include <moorsph/fluid/boundary_force_law.hpp>
 #include <moorsph/fluid/counted.hpp>
 #include <moorsph/fluid/fluid_effect.hpp>
+#include <moorsph/fluid/rigid_motion.hpp>
 
 namespace moorsph::fluid {
 
@@ -53,10 +54,32 @@ class Walls final : public FluidEffect<D>, public Counted<Walls<D>> {
   /// Sum of the reactions of `surface` and their moments about `point` (tracked surfaces only).
   SurfaceWrench calcSurfaceWrench(std::size_t surface, const Vec<D>& point) const;
 
+  /// Place a movable surface: every particle is rebuilt from its body-frame reference
+  /// coordinates and normals (r = position + R r_ref, n = R n_ref), so nothing drifts.
+  /// Throws std::invalid_argument for a surface that is not movable.
+  void setSurfaceMotion(std::size_t surface, const RigidMotion<D>& motion);
+  const RigidMotion<D>& surfaceMotion(std::size_t surface) const;
+  /// Largest speed of any particle of a movable surface at its current motion [m/s].
+  double maxMovingSpeed() const;
+  /// Particle index range [first, second) of a surface.
+  std::pair<std::size_t, std::size_t> surfaceRange(std::size_t surface) const { return ranges_.at(surface); }
+
  private:
   void addReactions(FluidContext<D>& ctx);
+  void findSurfaceRanges();
+
+  /// Body-frame copy of a movable surface.
+  struct MovableSurface {
+    std::size_t surface;
+    std::vector<Vec<D>> reference_r;        ///< relative to the reference point
+    std::vector<Vec<D>> reference_normals;  ///< in the order of BoundaryParticles::normals
+    double radius = 0.0;                    ///< largest |reference_r|
+    RigidMotion<D> motion;
+  };
 
   BoundaryGeometry<D> geometry_;
+  std::vector<std::pair<std::size_t, std::size_t>> ranges_;
+  std::vector<MovableSurface> movable_;
   BoundaryForceLaw<D> law_;
   std::vector<char> tracked_;
   bool any_tracked_ = false;

@@ -1,0 +1,27 @@
+#include <moorsph/fluid/piston.hpp>
+
+#include <stdexcept>
+
+namespace moorsph::fluid {
+
+template <int D>
+Piston<D>::Piston(Walls<D>* walls, std::size_t surface, Signal displacement, Signal velocity)
+    : walls_(walls), surface_(surface), displacement_(std::move(displacement)), velocity_(std::move(velocity)) {
+  if (!walls_) throw std::invalid_argument("effects: 'piston' needs 'walls' (the piston is a wall surface)");
+  origin_ = walls_->surfaceMotion(surface_).position;  // throws if the surface is not movable
+}
+
+template <int D>
+void Piston<D>::advanceTo(double t) {
+  x_ = displacement_(t);
+  Vec<D> offset = origin_;
+  offset[0] += x_;
+  Vec<D> speed = Vec<D>::Zero();
+  speed[0] = velocity_(t);
+  walls_->setSurfaceMotion(surface_, RigidMotion<D>::translation(offset, speed));
+}
+
+template class Piston<2>;
+template class Piston<3>;
+
+}  // namespace moorsph::fluid
