@@ -1,0 +1,39 @@
+#pragma once
+// Turns a validated SceneConfig into the fluid scene: setup (properties, method,
+// effects, domain), fluid particles, boundary surfaces (tanks first, then boxes, in
+// file order), and the specs of the scene's gauges and pressure probes.
+#include <string>
+#include <vector>
+#include <moorsph/fluid/pressure_probe.hpp>
+#include <moorsph/fluid/tank_scene.hpp>
+#include <moorsph/fluid/wave_gauge.hpp>
+#include <moorsph/io/scene_config.hpp>
+
+namespace moorsph::io {
+
+template <int D>
+struct BuiltScene {
+  fluid::Scene<D> scene;
+  std::vector<std::string> gauge_names;
+  std::vector<fluid::WaveGaugeSpec<D>> gauges;
+  std::vector<std::string> probe_names;
+  std::vector<fluid::PressureProbeSpec<D>> probes;
+};
+
+/// Builds the particles. `config.dim` must equal D.
+template <int D>
+BuiltScene<D> buildScene(const SceneConfig& config);
+
+/// The FluidSetup alone (no particles): what `moorsph check` reports before building.
+template <int D>
+fluid::FluidSetup<D> makeSetup(const SceneConfig& config);
+
+/// Particle counts without building: fluid from the water lattices, boundary from
+/// the surface lattices (edges shared by faces counted once).
+struct ParticleCounts {
+  std::size_t fluid = 0;
+  std::size_t boundary = 0;
+};
+ParticleCounts countParticles(const SceneConfig& config);
+
+}  // namespace moorsph::io

@@ -1,0 +1,112 @@
+#pragma once
+// What a scene file says, as plain data (docs/scene-reference.md). The loader fills
+// and validates these structs before anything is allocated; the builder turns them
+// into the fluid scene. Vectors are stored with three entries whatever the dimension
+// (the third is unused in 2D), so one struct serves 2D and 3D scenes. SI units.
+#include <array>
+#include <string>
+#include <vector>
+#include <moorsph/fluid/method_parameters.hpp>
+
+namespace moorsph::io {
+
+using Triple = std::array<double, 3>;
+
+/// An axis-aligned box [lower, upper] [m].
+struct BoxExtent {
+  Triple lower{0.0, 0.0, 0.0};
+  Triple upper{0.0, 0.0, 0.0};
+};
+
+/// Where a YAML entry came from, for messages after loading ("file:line:column").
+struct SourceLocation {
+  std::string text;
+};
+
+/// A box tank: boundary particles on its inner faces, normals pointing in.
+struct TankConfig {
+  std::string name = "tank";
+  BoxExtent box;
+  bool lid = false;          ///< closed top (face +y)
+  bool track_reaction = false;  ///< set when a pressure probe sits on it
+  SourceLocation where;
+};
+
+/// A box obstacle: boundary particles on its outer faces, normals pointing out.
+struct BoxObstacleConfig {
+  std::string name = "box";
+  BoxExtent box;
+  std::vector<std::string> open_faces;  ///< faces left out: "-x", "+x", "-y", "+y", "-z", "+z"
+  bool track_reaction = false;
+  SourceLocation where;
+};
+
+/// A block of water on the fluid lattice.
+struct WaterConfig {
+  BoxExtent box;
+  SourceLocation where;
+};
+
+struct GaugeConfig {
+  std::string name;
+  double x = 0.0;       ///< [m]
+  double z = 0.0;       ///< [m], 3D only
+  double bottom = 0.0;  ///< [m]
+  double top = 1.0;     ///< [m]
+  double threshold = 0.8;
+};
+
+struct ProbeConfig {
+  std::string name;
+  std::string surface;          ///< name of a tank or box
+  Triple point{0.0, 0.0, 0.0};  ///< [m]
+  Triple normal{0.0, 0.0, 0.0}; ///< into the fluid
+  double radius = 0.0;          ///< [m]; 0: dx
+  double interpolation_offset = 0.0;  ///< [m]; 0: 1.5 dx
+};
+
+struct OutputConfig {
+  double interval = 0.01;            ///< time-series interval [s]
+  double particles_interval = 0.0;   ///< particle snapshot interval [s]; 0: none
+  double checkpoint_minutes = 30.0;  ///< wall-time interval of checkpoints [min]; 0: at the end only
+};
+
+struct SceneConfig {
+  std::string file;  ///< where it was read from
+  std::string name;
+  int dim = 2;
+  double end_time = 0.0;  ///< [s]
+
+  // resolution
+  double dx = 0.0;                ///< [m]
+  double boundary_spacing = 0.0;  ///< [m]; 0: dx
+
+  // fluid
+  double rho0 = 1000.0;       ///< [kg/m^3]
+  double mu = 1.0e-3;         ///< [Pa s]
+  double sound_speed = 0.0;   ///< [m/s]; 0: 10 sqrt(2 g H)
+  Triple gravity{0.0, -9.81, 0.0};
+  bool hydrostatic_start = true;
+
+  fluid::MethodParameters method = fluid::MethodParameters::reference();
+  std::vector<std::string> effects{"pressure", "viscosity", "xsph", "gravity", "walls"};
+
+  bool domain_given = false;
+  BoxExtent domain;
+  std::array<bool, 3> periodic{false, false, false};
+
+  std::vector<TankConfig> tanks;
+  std::vector<BoxObstacleConfig> boxes;
+  std::vector<WaterConfig> water;
+  std::vector<GaugeConfig> gauges;
+  std::vector<ProbeConfig> probes;
+  OutputConfig output;
+
+  double spacing() const { return boundary_spacing > 0.0 ? boundary_spacing : dx; }
+  /// Height of the water column H [m]: highest water top minus lowest water bottom.
+  double waterHeight() const;
+  /// The speed the scene's water may reach, sqrt(2 g H) [m/s].
+  double expectedSpeed() const;
+};
+
+}  // namespace moorsph::io

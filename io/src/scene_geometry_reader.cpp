@@ -1,0 +1,213 @@
+// Geometry, sensor and method sections of a scene file.
+#include <algorithm>
+#include <cmath>
+#include "scene_sections.hpp"
+
+namespace moorsph::io::detail {
+namespace {
+
+const char* const kAxis = "xyz";
+
+BoxExtent readExtent(MapReader& m, const SceneConfig& c, double min_edge, const std::string& what) {
+  BoxExtent b;
+  b.lower = toTriple(m.vector("lower", c.dim));
+  b.upper = toTriple(m.vector("upper", c.dim));
+  for (int k = 0; k < c.dim; ++k) {
+    const double edge = b.upper[k] - b.lower[k];
+    if (!(edge > 0.0)) m.fail("upper", std::string("expected upper > lower along ") + kAxis[k] + " [m]");
+    if (edge < min_edge * (1.0 - 1e-9)) {
+      char msg[240];
+      std::snprintf(msg, sizeof msg,
+                    "the %s is %g m along %c, finer than the resolution allows (at least %g m at dx = %g m); "
+                    "refine resolution.dx or enlarge it",
+                    what.c_str(), edge, kAxis[k], min_edge, c.dx);
+      m.fail("upper", msg);
+    }
+  }
+  return b;
+}
+
+bool inside(const BoxExtent& inner, const BoxExtent& outer, int dim) {
+  const double tol = 1e-9;
+  for (int k = 0; k < dim; ++k)
+    if (inner.lower[k] < outer.lower[k] - tol || inner.upper[k] > outer.upper[k] + tol) return false;
+  return true;
+}
+
+std::string uniqueName(const SceneConfig& c, const std::string& name) {
+  for (const auto& t : c.tanks) if (t.name == name) return "";
+  for (const auto& b : c.boxes) if (b.name == name) return "";
+  return name;
+}
+
+}  // namespace
+
+Triple toTriple(const std::vector<double>& v) {
+  Triple t{0.0, 0.0, 0.0};
+  for (std::size_t k = 0; k < v.size() && k < 3; ++k) t[k] = v[k];
+  return t;
+}
+
+void readGeometry(MapReader& top, SceneConfig& c) {
+  const YAML::Node list = top.child("geometry");
+  if (!list.IsDefined() || list.IsNull()) top.fail("geometry", "required key is missing (expected a list with at least one water block)");
+  if (!list.IsSequence()) top.fail("geometry", "expected a list of items (tank, water, box), got " + describeNode(list));
+  const YamlSource& src = top.source();
+  for (std::size_t i = 0; i < list.size(); ++i) {
+    const std::string item_path = "geometry[" + std::to_string(i) + "]";
+    const YAML::Node item = list[i];
+    if (!item.IsMap() || item.size() != 1)
+      src.fail(item, item_path, "expected one of 'tank:', 'water:', 'box:' followed by its keys");
+    MapReader one(item, item_path, src);
+    one.rejectUnsupported({"sphere", "cylinder", "mesh", "stl", "obj", "body"},
+                          "only tank, water and box geometry exist so far");
+    const std::string kind = item.begin()->first.as<std::string>();
+    for (const char* k : {"tank", "water", "box"})
+      if (kind != k) one.child(k);  // known here, for the misspelling hint
+    if (kind == "tank") {
+      MapReader m(one.child("tank"), item_path + ".tank", src);
+      TankConfig t;
+      t.name = m.text("name", "tank");
+      t.box = readExtent(m, c, 2.0 * c.dx, "tank");
+      t.lid = m.boolean("lid", false);
+      t.where.text = src.locate(item, item_path);
+      if (uniqueName(c, t.name).empty()) m.fail("name", "another surface is already named '" + t.name + "'");
+      m.finish();
+      c.tanks.push_back(t);
+    } else if (kind == "water") {
+      MapReader m(one.child("water"), item_path + ".water", src);
+      WaterConfig w;
+      w.box = readExtent(m, c, c.dx, "water block");
+      w.where.text = src.locate(item, item_path);
+      m.finish();
+      bool contained = c.tanks.empty();
+      for (const auto& t : c.tanks) contained = contained || inside(w.box, t.box, c.dim);
+      if (!contained) m.fail("lower", "the water block must lie inside a tank listed before it");
+      if (c.domain_given && !inside(w.box, c.domain, c.dim)) m.fail("lower", "the water block must lie inside the domain");
+      c.water.push_back(w);
+    } else if (kind == "box") {
+      MapReader m(one.child("box"), item_path + ".box", src);
+      BoxObstacleConfig b;
+      b.name = m.text("name", "box" + std::to_string(c.boxes.size()));
+      b.box = readExtent(m, c, 2.0 * c.dx, "box");
+      b.open_faces = m.textList("open_faces", {});
+      for (const auto& f : b.open_faces) {
+        const bool ok = f.size() == 2 && (f[0] == '-' || f[0] == '+') && f[1] >= 'x' && f[1] < 'x' + c.dim;
+        if (!ok) m.fail("open_faces", "expected faces among -x, +x, -y, +y" + std::string(c.dim == 3 ? ", -z, +z" : "") + ", got '" + f + "'");
+      }
+      b.where.text = src.locate(item, item_path);
+      if (uniqueName(c, b.name).empty()) m.fail("name", "another surface is already named '" + b.name + "'");
+      m.finish();
+      c.boxes.push_back(b);
+    }
+    one.finish();
+  }
+  if (c.water.empty()) top.fail("geometry", "the scene has no water block (add '- water: {lower: [...], upper: [...]}')");
+  const bool has_walls = std::find(c.effects.begin(), c.effects.end(), "walls") != c.effects.end();
+  if (!has_walls && (!c.tanks.empty() || !c.boxes.empty()))
+    top.fail("effects", "the scene has tanks or boxes but 'walls' is not in its effects");
+}
+
+void readSensors(MapReader& top, SceneConfig& c) {
+  const YamlSource& src = top.source();
+  const YAML::Node gauges = top.child("gauges");
+  if (gauges.IsDefined() && !gauges.IsNull()) {
+    if (!gauges.IsSequence()) top.fail("gauges", "expected a list of wave gauges, got " + describeNode(gauges));
+    for (std::size_t i = 0; i < gauges.size(); ++i) {
+      MapReader m(gauges[i], "gauges[" + std::to_string(i) + "]", src);
+      GaugeConfig g;
+      g.name = m.text("name", "G" + std::to_string(i + 1));
+      g.x = m.requiredNumber("x");
+      g.z = c.dim == 3 ? m.requiredNumber("z") : 0.0;
+      g.bottom = m.number("bottom", 0.0);
+      g.top = m.requiredNumber("top");
+      g.threshold = m.number("threshold", g.threshold);
+      if (!(g.top > g.bottom)) m.fail("top", "expected top > bottom [m]");
+      if (!(g.threshold > 0.0 && g.threshold < 1.0)) m.fail("threshold", "expected xi_t in (0, 1) (METHOD.md section 3: 0.8)");
+      m.finish();
+      c.gauges.push_back(g);
+    }
+  }
+  const YAML::Node probes = top.child("pressure_probes");
+  if (probes.IsDefined() && !probes.IsNull()) {
+    if (!probes.IsSequence()) top.fail("pressure_probes", "expected a list of probes, got " + describeNode(probes));
+    for (std::size_t i = 0; i < probes.size(); ++i) {
+      MapReader m(probes[i], "pressure_probes[" + std::to_string(i) + "]", src);
+      ProbeConfig p;
+      p.name = m.text("name", "P" + std::to_string(i + 1));
+      p.surface = m.requiredText("surface");
+      p.point = toTriple(m.vector("point", c.dim));
+      p.normal = toTriple(m.vector("normal", c.dim));
+      p.radius = m.positive("radius", c.dx, "patch radius [m]");
+      p.interpolation_offset = m.positive("interpolation_offset", 1.5 * c.dx, "distance in front of the wall [m]");
+      if (std::hypot(p.normal[0], p.normal[1], p.normal[2]) == 0.0) m.fail("normal", "expected a non-zero normal into the fluid");
+      bool found = false;
+      std::vector<std::string> names;
+      for (auto& t : c.tanks) {
+        names.push_back(t.name);
+        if (t.name == p.surface) found = t.track_reaction = true;
+      }
+      for (auto& b : c.boxes) {
+        names.push_back(b.name);
+        if (b.name == p.surface) found = b.track_reaction = true;
+      }
+      if (!found) {
+        const std::string guess = closestWord(p.surface, names);
+        m.fail("surface", "no tank or box is named '" + p.surface + "'" + (guess.empty() ? "" : " (did you mean '" + guess + "'?)"));
+      }
+      m.finish();
+      c.probes.push_back(p);
+    }
+  }
+}
+
+void readMethod(MapReader& top, SceneConfig& c) {
+  if (!top.has("method")) {
+    top.child("method");
+    return;
+  }
+  MapReader m(top.child("method"), "method", top.source());
+  const std::string preset = m.text("preset", "reference");
+  if (preset != "reference") m.fail("preset", "unknown preset '" + preset + "' (known: reference)");
+  fluid::MethodParameters& p = c.method;
+  p = fluid::MethodParameters::reference();
+  p.h_factor = m.positive("h_factor", p.h_factor, "smoothing length h / dx");
+  if (p.h_factor < 1.0 || p.h_factor > 2.5) m.fail("h_factor", "expected h / dx in [1, 2.5] (reference 1.2)");
+  p.cfl = m.positive("cfl", p.cfl, "CFL number");
+  if (p.cfl > 1.0) m.fail("cfl", "expected a CFL number in (0, 1] (reference 0.5)");
+  p.predictor_fraction = m.positive("predictor_fraction", p.predictor_fraction, "fraction of dt the predictor advances");
+  if (p.predictor_fraction > 1.0) m.fail("predictor_fraction", "expected a value in (0, 1] (reference 1, midpoint 0.5)");
+  p.force_dt_factor = m.positive("force_dt_factor", p.force_dt_factor, "factor of the force time-step bound");
+  p.gamma = m.positive("gamma", p.gamma, "Tait exponent");
+  p.xsph_eps = m.positive("xsph_eps", p.xsph_eps, "XSPH epsilon", true);
+  if (p.xsph_eps > 1.0) m.fail("xsph_eps", "expected a value in [0, 1] (reference 0.5)");
+  const std::string form = m.text("xsph_form", "reference");
+  if (form == "reference") p.xsph_form = fluid::XsphForm::Reference;
+  else if (form == "monaghan") p.xsph_form = fluid::XsphForm::Monaghan;
+  else m.fail("xsph_form", "expected 'reference' or 'monaghan', got '" + form + "'");
+  p.viscosity_xi = m.positive("viscosity_xi", p.viscosity_xi, "Cleary xi");
+  p.viscosity_beta_factor = m.positive("viscosity_beta_factor", p.viscosity_beta_factor, "beta / dx", true);
+  p.boundary_offset = m.positive("b_off", p.boundary_offset, "wall offset in units of dx", true);
+  if (p.boundary_offset > 1.0) m.fail("b_off", "expected a wall offset in [0, 1] dx (reference 0.5)");
+  p.boundary_strength = m.positive("boundary_strength", p.boundary_strength, "wall force scale");
+  p.skin_factor = m.positive("skin_factor", p.skin_factor, "Verlet skin / 2h");
+  if (m.has("density_diffusion")) {
+    MapReader d(m.child("density_diffusion"), "method.density_diffusion", top.source());
+    p.density_diffusion_delta = d.positive("delta", p.density_diffusion_delta, "delta-SPH coefficient");
+    const std::string f = d.text("form", "fourtakas");
+    if (f == "fourtakas") p.density_diffusion_form = fluid::DensityDiffusionForm::Fourtakas;
+    else if (f == "molteni_colagrossi") p.density_diffusion_form = fluid::DensityDiffusionForm::MolteniColagrossi;
+    else d.fail("form", "expected 'fourtakas' or 'molteni_colagrossi', got '" + f + "'");
+    d.finish();
+  } else {
+    m.child("density_diffusion");
+  }
+  const bool changed = m.has("h_factor") || m.has("cfl") || m.has("predictor_fraction") || m.has("xsph_form") ||
+                       m.has("b_off") || m.has("density_diffusion") || m.has("force_dt_factor") || m.has("gamma") ||
+                       m.has("xsph_eps") || m.has("viscosity_xi") || m.has("viscosity_beta_factor") ||
+                       m.has("boundary_strength") || m.has("skin_factor");
+  p.name = changed ? "reference+options" : "reference";
+  m.finish();
+}
+
+}  // namespace moorsph::io::detail

@@ -1,0 +1,17 @@
+#pragma once
+// Section readers of the scene loader (private to io/).
+#include <moorsph/io/scene_config.hpp>
+#include "yaml_reader.hpp"
+
+namespace moorsph::io::detail {
+
+/// Reads `geometry`, `gauges` and `pressure_probes`; needs dim, dx and the boundary spacing.
+void readGeometry(MapReader& top, SceneConfig& config);
+void readSensors(MapReader& top, SceneConfig& config);
+/// Reads `method` on top of the reference preset.
+void readMethod(MapReader& top, SceneConfig& config);
+
+/// A vector of the scene's dimension, padded to three entries.
+Triple toTriple(const std::vector<double>& v);
+
+}  // namespace moorsph::io::detail

@@ -1,0 +1,158 @@
+// Scene files: the examples load and build; each class of error is rejected before
+// anything is allocated, with file:line:column, the key and what is expected.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <string>
+#include <moorsph/io/scene_builder.hpp>
+#include <moorsph/io/scene_loader.hpp>
+
+using namespace moorsph;
+
+namespace {
+
+std::string sourceDir() {
+  const char* dir = std::getenv("MOORSPH_SOURCE_DIR");
+  return dir ? dir : ".";
+}
+
+const char* const kBase = R"(dim: 2
+end_time: 0.1
+resolution:
+  dx: 0.01
+fluid:
+  sound_speed: 25
+geometry:
+  - tank: {lower: [0, 0], upper: [0.4, 0.3], lid: true}
+  - water: {lower: [0, 0], upper: [0.1, 0.2]}
+)";
+
+/// The message of the SceneError that loading `text` raises ("" if none).
+std::string errorOf(const std::string& text, const std::vector<std::string>& sets = {}) {
+  try {
+    io::loadSceneText(text, "s.yaml", sets);
+  } catch (const io::SceneError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+}  // namespace
+
+TEST(SceneLoader, ExamplesLoadAndBuild) {
+  for (const char* name : {"dam_break_2d", "dam_break_3d", "hydrostatic_tank_2d"}) {
+    SCOPED_TRACE(name);
+    const auto c = io::loadSceneFile(sourceDir() + "/cases/" + name + ".yaml");
+    EXPECT_EQ(c.name, name);
+    const auto n = io::countParticles(c);
+    if (c.dim == 2) {
+      const auto built = io::buildScene<2>(c);
+      EXPECT_LE(built.scene.fluid.size(), n.fluid);
+      EXPECT_EQ(built.gauges.size(), c.gauges.size());
+      EXPECT_EQ(built.probes.size(), c.probes.size());
+    } else {
+      const auto built = io::buildScene<3>(c);
+      EXPECT_EQ(built.scene.fluid.size(), n.fluid);
+      EXPECT_EQ(built.scene.boundary.particles.size(), n.boundary);  // closed tank: exact
+    }
+  }
+}
+
+TEST(SceneLoader, DamBreakMatchesTheBuiltInScene) {
+  const auto c = io::loadSceneFile(sourceDir() + "/cases/dam_break_2d.yaml");
+  const auto built = io::buildScene<2>(c);
+  EXPECT_EQ(built.scene.fluid.size(), 20u * 40u);  // 0.1 x 0.2 m at dx = 5 mm
+  EXPECT_DOUBLE_EQ(built.scene.setup.sound_speed, 28.0);
+  EXPECT_EQ(built.scene.setup.method.name, "reference");
+  EXPECT_TRUE(built.scene.boundary.surfaces[0].track_reaction);  // a probe sits on it
+}
+
+TEST(SceneLoader, ResolvedYamlLoadsToTheSameScene) {
+  const auto a = io::loadSceneFile(sourceDir() + "/cases/hydrostatic_tank_2d.yaml");
+  const std::string text = io::resolvedSceneYaml(a);
+  const auto b = io::loadSceneText(text, "resolved.yaml");
+  EXPECT_EQ(io::resolvedSceneYaml(b), text);
+  EXPECT_EQ(b.sound_speed, a.sound_speed);
+  EXPECT_EQ(b.method.xsph_form, fluid::XsphForm::Monaghan);
+}
+
+TEST(SceneLoader, UnknownKeySuggestsTheClosest) {
+  const std::string msg = errorOf(std::string(kBase) + "output:\n  intervall: 0.1\n");
+  EXPECT_NE(msg.find("s.yaml:11:3"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("'output.intervall'"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("did you mean 'interval'"), std::string::npos) << msg;
+  const std::string top = errorOf(std::string(kBase) + "gauge: []\n");
+  EXPECT_NE(top.find("did you mean 'gauges'"), std::string::npos) << top;
+}
+
+TEST(SceneLoader, WrongTypeNamesWhatIsExpected) {
+  std::string text = kBase;
+  text.replace(text.find("0.01"), 4, "fine");
+  const std::string msg = errorOf(text);
+  EXPECT_NE(msg.find("s.yaml:4:7"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("'resolution.dx': expected a number, got 'fine'"), std::string::npos) << msg;
+  const std::string vec = errorOf(std::string(kBase) + "fluid2: 1\n");
+  EXPECT_NE(vec.find("unknown key"), std::string::npos);
+  std::string three = kBase;
+  three.replace(three.find("[0.1, 0.2]"), 10, "[0.1, 0.2, 0.1]");
+  EXPECT_NE(errorOf(three).find("expected a list of 2 numbers"), std::string::npos) << errorOf(three);
+}
+
+TEST(SceneLoader, MissingRequiredKey) {
+  std::string text = kBase;
+  text.erase(text.find("end_time: 0.1\n"), 14);
+  const std::string msg = errorOf(text);
+  EXPECT_NE(msg.find("'end_time': required key is missing"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("s.yaml:1:1"), std::string::npos) << msg;
+}
+
+TEST(SceneLoader, OutOfRangeValues) {
+  std::string neg = kBase;
+  neg.replace(neg.find("0.01"), 4, "-0.01");
+  EXPECT_NE(errorOf(neg).find("'resolution.dx': expected a particle spacing > 0 [m]"), std::string::npos) << errorOf(neg);
+
+  std::string coarse = kBase;
+  coarse.replace(coarse.find("dx: 0.01"), 8, "dx: 0.01\n  boundary_spacing: 0.02");
+  const std::string c = errorOf(coarse);
+  EXPECT_NE(c.find("s.yaml:5:21"), std::string::npos) << c;
+  EXPECT_NE(c.find("not be coarser than the fluid spacing"), std::string::npos) << c;
+
+  std::string slow = kBase;
+  slow.replace(slow.find("sound_speed: 25"), 15, "sound_speed: 12");
+  const std::string s = errorOf(slow);
+  EXPECT_NE(s.find("'fluid.sound_speed': c_s = 12 m/s is below 10 x sqrt(2 g H) = 19.8"), std::string::npos) << s;
+  EXPECT_NE(s.find("s.yaml:6:16"), std::string::npos) << s;
+
+  std::string feature = std::string(kBase) + "  - box: {name: pin, lower: [0.3, 0], upper: [0.315, 0.1]}\n";
+  const std::string f = errorOf(feature);
+  EXPECT_NE(f.find("the box is 0.015 m along x, finer than the resolution allows"), std::string::npos) << f;
+  EXPECT_NE(f.find("s.yaml:10:"), std::string::npos) << f;
+
+  std::string outside = kBase;
+  outside.replace(outside.find("[0.1, 0.2]"), 10, "[0.5, 0.2]");
+  EXPECT_NE(errorOf(outside).find("must lie inside a tank"), std::string::npos) << errorOf(outside);
+}
+
+TEST(SceneLoader, FeaturesThatDoNotExistYetAreRejected) {
+  const std::string bodies = errorOf(std::string(kBase) + "bodies:\n  - {name: buoy}\n");
+  EXPECT_NE(bodies.find("s.yaml:11:3: 'bodies': not supported yet"), std::string::npos) << bodies;
+  const std::string sphere = errorOf(std::string(kBase) + "  - sphere: {centre: [0.2, 0.1], radius: 0.05}\n");
+  EXPECT_NE(sphere.find("'geometry[2].sphere': not supported yet"), std::string::npos) << sphere;
+  const std::string piston = errorOf(std::string(kBase) + "effects: [pressure, gravity, walls, piston]\n");
+  EXPECT_NE(piston.find("'effects[3]': effect 'piston' is not supported yet"), std::string::npos) << piston;
+  const std::string typo = errorOf(std::string(kBase) + "effects: [pressure, gravty, walls]\n");
+  EXPECT_NE(typo.find("did you mean 'gravity'"), std::string::npos) << typo;
+}
+
+TEST(SceneLoader, CommandLineOverrides) {
+  const auto c = io::loadSceneText(kBase, "s.yaml", {"resolution.dx=0.005", "geometry[1].water.upper=[0.1, 0.1]",
+                                                     "method.cfl=0.25", "output.interval=0.02"});
+  EXPECT_EQ(c.dx, 0.005);
+  EXPECT_EQ(c.water[0].box.upper[1], 0.1);
+  EXPECT_EQ(c.method.cfl, 0.25);
+  EXPECT_EQ(c.method.name, "reference+options");
+  EXPECT_EQ(c.output.interval, 0.02);
+  const std::string msg = errorOf(kBase, {"resolution.dx=-1"});
+  EXPECT_NE(msg.find("--set resolution.dx: 'resolution.dx'"), std::string::npos) << msg;
+  EXPECT_NE(errorOf(kBase, {"resolution.dx"}).find("expected key.path=value"), std::string::npos);
+}
