@@ -91,6 +91,7 @@ void LumpedMassLine::initialize(const LineEnds& ends) {
   if (p_.relaxationTime > 0.0) relax(p_.relaxationTime);
   dissipated_ = 0.0;
   endWork_ = 0.0;
+  time_ = 0.0;
 }
 
 double LumpedMassLine::segmentTension(int j, double* dampingPower) const {
@@ -106,8 +107,8 @@ double LumpedMassLine::segmentTension(int j, double* dampingPower) const {
   return t;
 }
 
-void LumpedMassLine::computeAccelerations(std::vector<Eigen::Vector3d>& acc, double extraDamping,
-                                          double* dissipation, double* endPower) const {
+void LumpedMassLine::computeAccelerations(std::vector<Eigen::Vector3d>& acc, double time, bool movingWater,
+                                          double extraDamping, double* dissipation, double* endPower) const {
   const int n = p_.segments;
   std::vector<Eigen::Vector3d>& force = scratchForce_;  // no allocation per step
   force.assign(n + 1, Eigen::Vector3d::Zero());
@@ -134,11 +135,18 @@ void LumpedMassLine::computeAccelerations(std::vector<Eigen::Vector3d>& acc, dou
     Eigen::Vector3d f = force[i] + (nodeMass_ - wet * rho * area_ * l) * p_.gravity;
     const Eigen::Vector3d q = (r_[i + 1] - r_[i - 1]).normalized();
     const Eigen::Vector3d& v = v_[i];
-    const Eigen::Vector3d vt = v.dot(q) * q, vn = v - vt;
-    const Eigen::Vector3d drag = -wet * (0.5 * rho * d * l * p_.cdNormal * vn.norm() * vn +
-                                         0.5 * rho * kPi * d * l * p_.cdAxial * vt.norm() * vt);
-    f += drag;
-    power += drag.dot(v);
+    Eigen::Vector3d water = Eigen::Vector3d::Zero(), waterAcc = Eigen::Vector3d::Zero();
+    if (movingWater && wet > 0.0) p_.waterKinematics(r_[i], time, water, waterAcc);
+    const Eigen::Vector3d w = water - v;  // relative velocity of the water
+    const Eigen::Vector3d wt = w.dot(q) * q, wn = w - wt;
+    Eigen::Vector3d hydro = wet * (0.5 * rho * d * l * p_.cdNormal * wn.norm() * wn +
+                                   0.5 * rho * kPi * d * l * p_.cdAxial * wt.norm() * wt);
+    if (movingWater) {
+      const Eigen::Vector3d at = waterAcc.dot(q) * q, an = waterAcc - at;
+      hydro += wet * rho * area_ * l * ((1.0 + p_.caNormal) * an + (1.0 + p_.caAxial) * at);
+    }
+    f += hydro;
+    power += hydro.dot(v);
     if (p_.seabed) {
       const double penetration = -(r_[i] - p_.seabedPoint).dot(up_);
       if (penetration > 0.0) {
@@ -239,7 +247,7 @@ void LumpedMassLine::advance(double dt, const LineEnds& start, const LineEnds& e
     v_[0] = anchorVel;
     v_[n] = fairleadVel;
     double dissipation = 0.0, endPower = 0.0;
-    computeAccelerations(acc, 0.0, &dissipation, &endPower);
+    computeAccelerations(acc, time_ + k * h, static_cast<bool>(p_.waterKinematics), 0.0, &dissipation, &endPower);
     dissipated_ += h * dissipation;
     endWork_ += h * endPower;
     for (int i = 1; i < n; ++i) {
@@ -250,6 +258,7 @@ void LumpedMassLine::advance(double dt, const LineEnds& start, const LineEnds& e
     r_[0] = start.anchor + f * (end.anchor - start.anchor);
     r_[n] = start.fairlead + f * (end.fairlead - start.fairlead);
   }
+  time_ += dt;
   for (int i = 0; i <= n; ++i) {
     if (!r_[i].allFinite() || !v_[i].allFinite()) {
       std::ostringstream msg;
@@ -267,7 +276,7 @@ double LumpedMassLine::relax(double maxTime, double speedTolerance) {
   v_[n].setZero();
   double t = 0.0;
   while (t < maxTime) {
-    computeAccelerations(acc, p_.relaxationDamping, nullptr, nullptr);
+    computeAccelerations(acc, 0.0, false, p_.relaxationDamping, nullptr, nullptr);  // still water
     double fastest = 0.0;
     for (int i = 1; i < n; ++i) {
       v_[i] += dt_ * acc[i];
@@ -290,12 +299,13 @@ std::vector<double> LumpedMassLine::saveState() const {
   }
   out.push_back(dissipated_);
   out.push_back(endWork_);
+  out.push_back(time_);
   return out;
 }
 
 void LumpedMassLine::restoreState(const std::vector<double>& state) {
   const std::size_t nodes = static_cast<std::size_t>(p_.segments) + 1;
-  if (state.size() != 6 * nodes + 2) {
+  if (state.size() != 6 * nodes + 3) {
     throw std::invalid_argument("lumped_mass: saved state does not match the number of segments");
   }
   r_.resize(nodes);
@@ -306,6 +316,7 @@ void LumpedMassLine::restoreState(const std::vector<double>& state) {
   }
   dissipated_ = state[6 * nodes];
   endWork_ = state[6 * nodes + 1];
+  time_ = state[6 * nodes + 2];
   initialized_ = true;
 }
 

@@ -11,8 +11,9 @@
 //    this is EI kappa^2 l / 2 with kappa = angle / l); pinned ends carry no moment
 //  - net weight per node: (m - f rho_w A) l g, A = pi d^2/4 (d volumetric diameter), f the
 //    wet fraction of the node's two half segments (drag and added mass x f too)
-//  - Morison drag per node, node tangent q: F = -1/2 rho_w d l Cdn |v_n| v_n
-//    - 1/2 rho_w pi d l Cdt |v_t| v_t (still water)
+//  - Morison drag per node, node tangent q, relative velocity w = u_water - v:
+//    F = 1/2 rho_w d l Cdn |w_n| w_n + 1/2 rho_w pi d l Cdt |w_t| w_t, and with moving
+//    water the inertia force rho_w A l [(1 + Ca) a_n + (1 + CaAx) a_t]
 //  - node mass matrix: m l I + rho_w A l [Ca (I - q q^T) + CaAx q q^T]
 //  - seabed (plane through seabedPoint, normal up): penetration p > 0 gives
 //    F = (kb p - cb dp/dt)_+ d l up, friction -min(mu F, c_f |v_h|) v_h/|v_h| (Coulomb,
@@ -27,10 +28,16 @@
 
 #include <moorsph/bodies/mooring_line.hpp>
 
+#include <functional>
 #include <limits>
 #include <vector>
 
 namespace moorsph::bodies {
+
+/// Water velocity and acceleration (m/s, m/s^2, ground frame) at a point and time (s);
+/// e.g. linear wave kinematics or a current. The line's clock starts at 0 at initialize().
+using WaterKinematics = std::function<void(const Eigen::Vector3d& position, double time,
+                                           Eigen::Vector3d& velocity, Eigen::Vector3d& acceleration)>;
 
 struct LumpedMassParams {
   double length = 0.0;           ///< unstretched L, m
@@ -55,6 +62,9 @@ struct LumpedMassParams {
   bool seabed = true;            ///< contact with the plane through seabedPoint
   /// A point of the seabed plane; NaN: the anchor's initial position.
   Eigen::Vector3d seabedPoint = Eigen::Vector3d::Constant(std::numeric_limits<double>::quiet_NaN());
+  /// Moving water (empty: still water). Drag then acts on the relative velocity and the
+  /// water's acceleration adds the Morison inertia force rho V (1 + Ca) a (per direction).
+  WaterKinematics waterKinematics;
   double seabedStiffness = 3.0e6;  ///< kb, Pa/m
   double seabedDamping = 3.0e5;    ///< cb, Pa s/m
   double seabedFriction = 0.0;     ///< mu, -
@@ -93,14 +103,17 @@ class LumpedMassLine final : public MooringLine {
   /// Energy of the internal nodes and segments: kinetic, and potential (elastic +
   /// net weight above the anchor + seabed spring), J.
   double kineticEnergy() const;
-  /// Energy taken by drag, internal damping and the seabed since initialize(), J.
+  /// Energy taken by drag, internal damping and the seabed since initialize(), J (with
+  /// moving water: minus the net work of the hydrodynamic forces on the line).
   double dissipatedEnergy() const { return dissipated_; }
   /// Work done on the line by its two moving ends since initialize(), J.
   double endWork() const { return endWork_; }
+  /// The line's own clock (s since initialize(), advanced by advance()).
+  double time() const { return time_; }
 
  private:
-  void computeAccelerations(std::vector<Eigen::Vector3d>& acc, double extraDamping, double* dissipation,
-                            double* endPower) const;
+  void computeAccelerations(std::vector<Eigen::Vector3d>& acc, double time, bool movingWater, double extraDamping,
+                            double* dissipation, double* endPower) const;
   double segmentTension(int j, double* dampingPower) const;
   void addBendingForces(std::vector<Eigen::Vector3d>& force) const;
   double bendingEnergy() const;
@@ -113,7 +126,7 @@ class LumpedMassLine final : public MooringLine {
   double stableStep_ = 0.0, dt_ = 0.0, frictionSlope_ = 0.0;
   std::vector<Eigen::Vector3d> r_, v_;
   mutable std::vector<Eigen::Vector3d> scratchForce_;
-  double dissipated_ = 0.0, endWork_ = 0.0;
+  double dissipated_ = 0.0, endWork_ = 0.0, time_ = 0.0;
   bool initialized_ = false;
 };
 
