@@ -50,6 +50,12 @@ def load_run(run_dir):
             info[key] = value
     with h5py.File(os.path.join(run_dir, "series.h5"), "r") as f:
         series = {name: {c: f[name][c][:] for c in f[name].keys()} for name in f.keys()}
+    if info.get("status", "finished") != "finished":
+        # Stopped by hand (or still running): the last output row has the figures.
+        e = series["energy"]
+        info["simulated"] = str(e["time"][-1])
+        info["steps"] = str(int(e["steps"][-1]))
+        info["wall_seconds"] = str(e["wall_time"][-1])
     return info, series
 
 
@@ -66,9 +72,9 @@ def first_crossing(t, y, level):
     return float(t[idx[0]]) if idx.size else float("nan")
 
 
-def metrics(data, info, series):
+def metrics(data, info, series, window=WINDOW):
     out = {}
-    t_end = min(WINDOW, float(series["gauges"]["time"][-1]))
+    t_end = min(window, float(series["gauges"]["time"][-1]))
     mask = data["time"] <= t_end
     te = data["time"][mask]
     for g in GAUGES:
@@ -91,7 +97,7 @@ def metrics(data, info, series):
         k = int(np.argmax(smooth))
         out["peak10_" + name] = (float(smooth[k]), float(tp[k]))
         exp_smooth = running_mean(data["time"], data["P1"], 0.010)
-        win = (te >= 0.3)
+        win = te >= 0.3
         sim_on_exp = np.interp(te[win], tp, smooth)
         out["rms10_" + name] = float(np.sqrt(np.mean((sim_on_exp - exp_smooth[mask][win]) ** 2)))
     k = int(np.argmax(data["P1"]))
@@ -105,7 +111,8 @@ def metrics(data, info, series):
 
 def label(info):
     dd = " +dd" if info.get("density_diffusion", "0") == "1" else ""
-    return "moorsph dx = %.4g m%s" % (float(info["dx"]), dd)
+    xs = " +Monaghan XSPH" if info.get("xsph_monaghan", "0") == "1" else ""
+    return "moorsph dx = %.4g m%s%s" % (float(info["dx"]), dd, xs)
 
 
 def plot_heights(data, runs, path):
@@ -169,8 +176,8 @@ def plot_p1_zoom(data, runs, path):
     plt.close(fig)
 
 
-def table(runs, data):
-    rows = []
+def table(runs, data, heading=""):
+    rows = [heading] if heading else []
     rows.append("| run | dx [m] | fluid particles | boundary particles | simulated [s] | steps | wall [s] | threads "
                 "| particle-steps/s |")
     rows.append("|---|---|---|---|---|---|---|---|---|")
@@ -193,7 +200,7 @@ def table(runs, data):
             (label(info), m["t_end"]) + tuple(1e3 * m["rms_" + g] for g in GAUGES) + (half,)
             + tuple(m["arrive_" + g] for g in GAUGES[:3])))
     rows.append("")
-    rows.append("| run | P1 peak raw [Pa] at [s] | P1 peak, 10 ms mean [Pa] at [s] | RMS of 10 ms means, 0.3..6 s [Pa] |")
+    rows.append("| run | P1 peak raw [Pa] at [s] | P1 peak, 10 ms mean [Pa] at [s] | RMS of 10 ms means, 0.3 s..window end [Pa] |")
     rows.append("|---|---|---|---|")
     rows.append("| experiment | %.0f at %.3f | %.0f at %.3f | |" % (first["peak_exp_P1"] + first["peak10_exp_P1"]))
     for info, series, m in runs:
@@ -208,6 +215,8 @@ def main():
     ap.add_argument("--data", required=True)
     ap.add_argument("--plots", required=True, help="folder for the PNG plots")
     ap.add_argument("--table", help="write the markdown tables here too")
+    ap.add_argument("--common-window", action="store_true",
+                    help="also tabulate every run's errors over the shortest run's time window")
     ap.add_argument("runs", nargs="+")
     args = ap.parse_args()
     data = load_data(args.data)
@@ -224,7 +233,11 @@ def main():
     plot_heights(data, runs, os.path.join(args.plots, "spheric-test2-heights.png"))
     plot_pressure(data, runs, os.path.join(args.plots, "spheric-test2-pressure.png"))
     plot_p1_zoom(data, runs, os.path.join(args.plots, "spheric-test2-p1-impact.png"))
-    text = table(runs, data)
+    text = table(runs, data, "Errors over 0..%.0f s (or up to where a run stopped):\n" % WINDOW)
+    if args.common_window:
+        common = min(float(series["gauges"]["time"][-1]) for _, series, _ in runs)
+        again = [(info, series, metrics(data, info, series, common)) for info, series, _ in runs]
+        text += "\n" + table(again, data, "Errors over the common window 0..%.2f s:\n" % common)
     print(text)
     if args.table:
         with open(args.table, "w") as f:

@@ -6,7 +6,7 @@
 // and run.txt with particles, steps, wall time and threads.
 //
 //   moorsph_spheric_test2 [--dx M] [--end S] [--out DIR] [--output-interval S]
-//                         [--density-diffusion] [--threads N]
+//                         [--density-diffusion] [--xsph-monaghan] [--threads N]
 #include <omp.h>
 
 #include <cstdio>
@@ -27,13 +27,14 @@ struct Options {
   double output_interval = 0.002;
   std::string out = "spheric_test2_out";
   bool density_diffusion = false;
+  bool xsph_monaghan = false;
   int threads = 0;  // 0: OpenMP's default
 };
 
 [[noreturn]] void usage(const char* program, int code) {
   std::fprintf(code ? stderr : stdout,
                "usage: %s [--dx M (0.04)] [--end S (6.0)] [--out DIR] [--output-interval S (0.002)]\n"
-               "          [--density-diffusion] [--threads N]\n",
+               "          [--density-diffusion] [--xsph-monaghan] [--threads N]\n",
                program);
   std::exit(code);
 }
@@ -55,6 +56,7 @@ Options parse(int argc, char** argv) {
       else if (arg == "--out") o.out = value();
       else if (arg == "--output-interval") o.output_interval = std::stod(value());
       else if (arg == "--density-diffusion") o.density_diffusion = true;
+      else if (arg == "--xsph-monaghan") o.xsph_monaghan = true;
       else if (arg == "--threads") o.threads = std::stoi(value());
       else if (arg == "-h" || arg == "--help") usage(argv[0], 0);
       else {
@@ -83,6 +85,7 @@ int main(int argc, char** argv) {
     st2::Spec spec;
     spec.dx = opt.dx;
     spec.density_diffusion = opt.density_diffusion;
+    spec.xsph_monaghan = opt.xsph_monaghan;
     st2::Built built = st2::build(spec);
     FluidSimulation<3> sim(built.scene.setup, built.scene.fluid, built.scene.boundary);
     const auto gauges = st2::makeGauges(0.8);
@@ -127,6 +130,20 @@ int main(int argc, char** argv) {
         "P1..P4 on the box face x = 0.8245 m at z = 0.471 m, heights 0.021..0.141 m: from the boundary "
         "reactions (Pn) and SPH-interpolated 1.5 dx in front of the face (Pni)");
 
+    // run.txt: what compare.py needs, written now (status running, so a run stopped by
+    // hand can still be compared using the /energy series) and again at the end.
+    const auto writeRunInfo = [&](const moorsph::cases::RunSummary& summary, const char* status) {
+      std::ofstream txt(std::filesystem::path(opt.out) / "run.txt");
+      txt << "status " << status << "\ndx " << sim.setup().dx << "\ndx_requested " << opt.dx << "\nend " << opt.end
+          << "\nsimulated " << summary.simulated_time << "\nparticles " << sim.fluid().size()
+          << "\nboundary_particles " << sim.walls()->particles().size() << "\nsteps " << summary.steps
+          << "\nwall_seconds " << summary.wall_seconds << "\nthreads " << threads << "\ndensity_diffusion "
+          << (opt.density_diffusion ? 1 : 0) << "\nxsph_monaghan " << (opt.xsph_monaghan ? 1 : 0) << "\nmethod "
+          << sim.setup().method.name << "\nsound_speed " << sim.setup().sound_speed << "\nerror "
+          << (summary.error.empty() ? "none" : summary.error) << "\n";
+    };
+    writeRunInfo({}, "running");
+
     std::printf("SPHERIC test 2: dx = %.5g m, c_s = %.2f m/s, %zu fluid + %zu boundary particles, %d threads, "
                 "effects:",
                 sim.setup().dx, sim.setup().sound_speed, sim.fluid().size(), sim.walls()->particles().size(), threads);
@@ -138,12 +155,7 @@ int main(int argc, char** argv) {
       std::fflush(stdout);
     });
 
-    std::ofstream txt(std::filesystem::path(opt.out) / "run.txt");
-    txt << "dx " << sim.setup().dx << "\ndx_requested " << opt.dx << "\nend " << opt.end << "\nsimulated " << summary.simulated_time << "\nparticles "
-        << summary.particles << "\nboundary_particles " << sim.walls()->particles().size() << "\nsteps "
-        << summary.steps << "\nwall_seconds " << summary.wall_seconds << "\nthreads " << threads
-        << "\ndensity_diffusion " << (opt.density_diffusion ? 1 : 0) << "\nsound_speed " << sim.setup().sound_speed
-        << "\nerror " << (summary.error.empty() ? "none" : summary.error) << "\n";
+    writeRunInfo(summary, "finished");
     std::printf("particles %zu  steps %zu  wall time %.1f s  threads %d  simulated %.3f s%s\n", summary.particles,
                 summary.steps, summary.wall_seconds, threads, summary.simulated_time,
                 summary.error.empty() ? "" : "  (stopped early)");

@@ -43,6 +43,10 @@ Built build(const Spec& spec) {
   if (spec.density_diffusion) tank.fluid.effects.emplace_back("density_diffusion");
   tank.fluid.method = fluid::MethodParameters::reference();
   if (spec.density_diffusion) tank.fluid.method.name = "reference+density_diffusion";
+  if (spec.xsph_monaghan) {
+    tank.fluid.method.xsph_form = fluid::XsphForm::Monaghan;
+    tank.fluid.method.name += "+xsph_monaghan";
+  }
   tank.fluid.sound_speed = spec.sound_speed > 0.0 ? spec.sound_speed : 10.0 * ritterFrontSpeed();
   tank.fluid.gravity = fluid::Vec<3>(0.0, -kGravity, 0.0);
 

@@ -65,6 +65,9 @@ struct Spec {
   bool exact_depth = true;
   double boundary_spacing = 0.0;   ///< [m]; 0 means dx
   bool density_diffusion = false;  ///< add the density-diffusion term (off in the reference method)
+  /// Monaghan's XSPH form instead of METHOD.md's (which slows particles where the kernel
+  /// is truncated, e.g. the surge front: sum_j V_j W_ij < 1 there).
+  bool xsph_monaghan = false;
   double sound_speed = 0.0;        ///< [m/s]; 0 means 10 x ritterFrontSpeed()
 };
 
