@@ -160,6 +160,7 @@ LineDiagnostics MultibodySystem::lineDiagnostics(int index, bool withShape) cons
     d.fairleadTension = f.fairleadTension;
     d.anchorTension = f.anchorTension;
     d.forceOnFairlead = f.onFairlead;
+    d.forceOnAnchor = f.onAnchor;
     d.slack = f.slack;
   } else {
     d.slack = true;

@@ -49,6 +49,7 @@ TEST(CablePath, IdealPulleyLengthTensionAndDirections) {
   EXPECT_NEAR(d.fairleadTension, tension, 1e-9);
   EXPECT_NEAR(d.anchorTension, tension, 1e-9);
   EXPECT_LT((d.forceOnFairlead - tension * Eigen::Vector3d::UnitY()).norm(), 1e-9);
+  EXPECT_LT((d.forceOnAnchor - tension * Eigen::Vector3d::UnitY()).norm(), 1e-9);  // pulled up to the pulley
   ASSERT_EQ(d.shape.size(), 4u);
   EXPECT_NEAR(sys.energy().lineElastic, 0.5 * 100.0 * (length - 5.0) * (length - 5.0), 1e-9);
   // The body feels T up (plus gravity): its acceleration is (T - m g)/m along y.

@@ -48,6 +48,7 @@ struct LineDiagnostics {
   double fairleadTension = 0.0;  ///< N
   double anchorTension = 0.0;    ///< N
   Eigen::Vector3d forceOnFairlead = Eigen::Vector3d::Zero();  ///< N, ground
+  Eigen::Vector3d forceOnAnchor = Eigen::Vector3d::Zero();    ///< N, ground
   bool slack = false;
   bool broken = false;
   double breakTime = std::numeric_limits<double>::quiet_NaN();  ///< s, NaN if intact
