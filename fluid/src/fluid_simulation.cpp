@@ -146,7 +146,7 @@ void FluidSimulation<D>::correct(double dt) {
 template <int D>
 void FluidSimulation<D>::step() {
   if (!rates_current_) {
-    for (auto& e : effects_) e->advanceTo(time_);
+    for (auto& e : effects_) e->advanceTo(time_, StepStage::Start);
     evaluateRates(time_, true);
   }
   const double dt = computeDt();
@@ -155,7 +155,7 @@ void FluidSimulation<D>::step() {
     PhaseTimers::Scope timing(timers_, phase_integrate_);
     predict(predicted_dt);
   }
-  for (auto& e : effects_) e->advanceTo(time_ + predicted_dt);
+  for (auto& e : effects_) e->advanceTo(time_ + predicted_dt, StepStage::Predicted);
   evaluateRates(time_ + predicted_dt, false);
   {
     PhaseTimers::Scope timing(timers_, phase_integrate_);
@@ -164,7 +164,7 @@ void FluidSimulation<D>::step() {
   time_ += dt;
   dt_ = dt;
   ++steps_;
-  for (auto& e : effects_) e->advanceTo(time_);
+  for (auto& e : effects_) e->advanceTo(time_, StepStage::Corrected);
   {
     PhaseTimers::Scope timing(timers_, phase_checks_);
     checkHealth();

@@ -12,7 +12,7 @@ Piston<D>::Piston(Walls<D>* walls, std::size_t surface, Signal displacement, Sig
 }
 
 template <int D>
-void Piston<D>::advanceTo(double t) {
+void Piston<D>::advanceTo(double t, StepStage /*stage*/) {
   x_ = displacement_(t);
   Vec<D> offset = origin_;
   offset[0] += x_;

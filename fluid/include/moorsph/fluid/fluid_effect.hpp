@@ -23,6 +23,13 @@ struct FluidContext {
   double time;  ///< time of the state being evaluated [s]
 };
 
+/// Where in the predictor-corrector step a call to FluidEffect::advanceTo falls.
+enum class StepStage {
+  Start,      ///< before the first evaluation of a run (or after a restart)
+  Predicted,  ///< before the rates at the predicted state are evaluated
+  Corrected,  ///< after the corrector, before the rates that start the next step
+};
+
 template <int D>
 class FluidEffect {
  public:
@@ -31,8 +38,11 @@ class FluidEffect {
   virtual const char* name() const = 0;
   /// Add this effect's contribution to dv/dt, dr/dt or drho/dt.
   virtual void addRates(FluidContext<D>& ctx) = 0;
-  /// Move prescribed parts (boundaries, makers) to time t before the state at t is evaluated.
-  virtual void advanceTo(double /*t*/) {}
+  /// Move prescribed parts (boundaries, makers, coupled bodies) to time t before the
+  /// state at t is evaluated. `stage` tells a coupled effect which state that is: the
+  /// reactions of the last evaluation belong to the predicted state when stage is
+  /// Corrected (see coupling/).
+  virtual void advanceTo(double /*t*/, StepStage /*stage*/) {}
 };
 
 }  // namespace moorsph::fluid

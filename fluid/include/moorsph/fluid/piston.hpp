@@ -19,7 +19,7 @@ class Piston final : public FluidEffect<D>, public Counted<Piston<D>> {
 
   const char* name() const override { return "piston"; }
   void addRates(FluidContext<D>&) override {}
-  void advanceTo(double t) override;
+  void advanceTo(double t, StepStage stage) override;
   double displacement() const { return x_; }
 
  private:
