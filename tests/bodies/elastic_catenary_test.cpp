@@ -187,3 +187,29 @@ TEST(ElasticCatenary, MooredBodyConservesEnergyWithAFrictionlessLine) {
   EXPECT_LT((d.shape.front() - sys.kinematics(0).position).norm(), 1e-6);
   EXPECT_LT((d.shape.back() - at.anchorPoint).norm(), 1e-6);
 }
+
+TEST(ElasticCatenary, EndsBelowTheAnchorMirrorTheSwappedLine) {
+  // A line hanging between two points with the "fairlead" below the "anchor" (no
+  // seabed) is the same catenary with the roles exchanged: forces and tensions swap.
+  mb::ElasticCatenaryParams p;
+  p.length = 150.0;
+  p.axialStiffness = 1e8;
+  p.weightPerLength = 300.0;
+  p.anchorOnSeabed = false;
+  const mb::ElasticCatenary line(p);
+  mb::LineEnds low, high;
+  low.fairlead = Eigen::Vector3d(10.0, -40.0, 5.0);
+  low.anchor = Eigen::Vector3d(100.0, 0.0, 60.0);
+  high.fairlead = low.anchor;
+  high.anchor = low.fairlead;
+  const mb::LineForces a = line.calcForces(low), b = line.calcForces(high);
+  EXPECT_LT((a.onFairlead - b.onAnchor).norm(), 1e-9 * b.onAnchor.norm());
+  EXPECT_LT((a.onAnchor - b.onFairlead).norm(), 1e-9 * b.onFairlead.norm());
+  EXPECT_NEAR(a.fairleadTension, b.anchorTension, 1e-9 * b.anchorTension);
+  // Statics of the whole line: the end forces carry its weight, w L downwards.
+  EXPECT_NEAR((a.onFairlead + a.onAnchor).y(), -300.0 * 150.0, 1e-6 * 300.0 * 150.0);
+  EXPECT_LT(std::abs((a.onFairlead + a.onAnchor).x()) + std::abs((a.onFairlead + a.onAnchor).z()), 1e-6);
+  const std::vector<Eigen::Vector3d> shape = line.calcShape(low);
+  EXPECT_LT((shape.front() - low.fairlead).norm(), 1e-6);
+  EXPECT_LT((shape.back() - low.anchor).norm(), 1e-6);
+}
