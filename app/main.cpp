@@ -1,6 +1,9 @@
-// moorsph: run a scene and write its results. With no arguments it runs the built-in
-// demo scene, a 2D dam break, and says where its output went. Scene files, `check`,
-// `export` and restarts arrive with the scene-file work (issue 3).
+// moorsph: run a scene and write its results.
+//   moorsph run SCENE.yaml [--out DIR] [--threads N] [--end T] [--set key=value ...] [--restart CKPT]
+//   moorsph check SCENE.yaml      validate and estimate the cost
+//   moorsph export DIR --csv      time series as CSV files
+// With no subcommand it runs the built-in demo scene, a 2D dam break, and says where
+// its output went (the README's first command relies on this).
 #include <CLI/CLI.hpp>
 #include <omp.h>
 
@@ -9,6 +12,7 @@
 #include <string>
 #include <moorsph/cases/dam_break.hpp>
 #include <moorsph/cases/run_recorder.hpp>
+#include "run/run_scene.hpp"
 
 namespace {
 
@@ -63,19 +67,52 @@ int runDemo(const DemoOptions& o) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  using namespace moorsph::app;
   CLI::App app{"moorsph: SPH simulation of moored floating bodies in waves"};
+  app.require_subcommand(0, 1);
   DemoOptions demo;
-  app.add_option("--out", demo.out, "output directory");
-  app.add_option("--end", demo.end, "simulated end time [s]")->check(CLI::PositiveNumber);
-  app.add_option("--dx", demo.dx, "particle spacing [m]")->check(CLI::PositiveNumber);
+  app.add_option("--out", demo.out, "output directory of the demo");
+  app.add_option("--end", demo.end, "simulated end time of the demo [s]")->check(CLI::PositiveNumber);
+  app.add_option("--dx", demo.dx, "particle spacing of the demo [m]")->check(CLI::PositiveNumber);
   app.add_option("--threads", demo.threads, "OpenMP threads (0: OMP_NUM_THREADS or all cores)");
   app.add_flag("--density-diffusion", demo.density_diffusion, "add the density-diffusion term (not in the reference method)");
-  app.footer("Exit codes: 0 success, 1 bad arguments, 2 bad input, 3 the run stopped on a numerical failure.");
+
+  RunOptions run;
+  CLI::App* run_cmd = app.add_subcommand("run", "run a scene file (docs/scene-reference.md)");
+  run_cmd->add_option("scene", run.scene, "scene file (YAML)")->required()->check(CLI::ExistingFile);
+  run_cmd->add_option("--out", run.out, "run directory (default moorsph-output/<scene name>; for a restart, <checkpoint dir>.restart)");
+  run_cmd->add_option("--threads", run.threads, "OpenMP threads (0: OMP_NUM_THREADS or all cores)")->check(CLI::NonNegativeNumber);
+  run_cmd->add_option("--end", run.end, "simulated end time [s], overriding end_time")->check(CLI::PositiveNumber);
+  run_cmd->add_option("--set", run.sets, "override a scene key: key.path=value (repeatable), e.g. --set resolution.dx=0.01");
+  run_cmd->add_option("--restart", run.restart, "continue from a checkpoint (bit-identical at the same thread count)")
+      ->check(CLI::ExistingFile);
+
+  std::string check_scene;
+  std::vector<std::string> check_sets;
+  int check_threads = 0;
+  CLI::App* check_cmd = app.add_subcommand("check", "validate a scene and estimate particles, steps, wall time and memory");
+  check_cmd->add_option("scene", check_scene, "scene file (YAML)")->required()->check(CLI::ExistingFile);
+  check_cmd->add_option("--set", check_sets, "override a scene key: key.path=value (repeatable)");
+  check_cmd->add_option("--threads", check_threads, "OpenMP threads for the timed sample");
+
+  std::string export_dir;
+  bool export_csv = false;
+  CLI::App* export_cmd = app.add_subcommand("export", "write the time series of a run directory as CSV files");
+  export_cmd->add_option("dir", export_dir, "run directory")->required()->check(CLI::ExistingDirectory);
+  export_cmd->add_flag("--csv", export_csv, "write DIR/csv/<group>.<name>.csv (time first, SI units in the header)")->required();
+
+  app.footer(
+      "Exit codes: 0 success, 1 bad arguments, 2 bad input (scene or checkpoint rejected), 3 the run stopped on a "
+      "numerical failure (failure checkpoint and diagnostic written), 4 output could not be written, 130 interrupted "
+      "(SIGINT/SIGTERM; checkpoint written).");
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     return app.exit(e) == 0 ? 0 : 1;
   }
+  if (*run_cmd) return runScene(run);
+  if (*check_cmd) return checkScene(check_scene, check_sets, check_threads);
+  if (*export_cmd) return exportRun(export_dir);
   try {
     return runDemo(demo);
   } catch (const std::invalid_argument& e) {

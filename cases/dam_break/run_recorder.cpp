@@ -40,17 +40,34 @@ void RunRecorder<D>::record() {
 }
 
 template <int D>
-RunSummary RunRecorder<D>::runTo(double end_time, const std::function<void(const std::string&)>& log) {
+RunSummary RunRecorder<D>::runTo(double end_time, const std::function<void(const std::string&)>& log,
+                                 const RunControl& control) {
   start_ = std::chrono::steady_clock::now();
   summary_.particles = sim_.fluid().size();
-  record();
-  double next_output = sim_.time() + interval_;
+  stopped_ = false;
+  next_output_ = control.next_output;
+  const double eps = 1e-12;
+  auto outputTime = [&](long long k) { return static_cast<double>(k) * interval_; };
+  if (sim_.time() >= outputTime(next_output_) - eps) {
+    record();
+    if (control.on_output) control.on_output();
+    while (outputTime(next_output_) <= sim_.time() + eps) ++next_output_;
+  }
   try {
-    while (sim_.time() < end_time - 1e-12) {
+    while (sim_.time() < end_time - eps) {
+      const bool stop = control.stop_requested && control.stop_requested();
+      const bool checkpoint = stop || (control.checkpoint_due && control.checkpoint_due());
+      // cflDt() bounds every step, so a step that cannot reach the next output or the
+      // end needs no rebuild.
+      const double reach = sim_.time() + sim_.cflDt();
+      if (checkpoint || (control.rebuild_at_outputs && (reach >= outputTime(next_output_) - eps || reach >= end_time - eps)))
+        sim_.requestNeighbourRebuild();
       sim_.step();
-      if (sim_.time() >= next_output - 1e-12) {
+      if (control.on_step) control.on_step();
+      if (sim_.time() >= outputTime(next_output_) - eps) {
         record();
-        next_output += interval_;
+        while (outputTime(next_output_) <= sim_.time() + eps) ++next_output_;
+        if (control.on_output) control.on_output();
         if (log) {
           char line[160];
           const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
@@ -58,6 +75,11 @@ RunSummary RunRecorder<D>::runTo(double end_time, const std::function<void(const
                         sim_.stepCount(), sim_.lastDt(), wall);
           log(line);
         }
+      }
+      if (checkpoint && control.on_checkpoint) control.on_checkpoint();
+      if (stop) {
+        stopped_ = true;
+        break;
       }
     }
   } catch (const fluid::SimulationError& e) {

@@ -1,7 +1,8 @@
 #pragma once
 // Runs a fluid simulation to an end time and records, at a fixed output interval,
 // the time series every run has (energy terms, dt, particle count, wall time) plus
-// a scene's own probes, into series.h5. Output is flushed at every output time, so a
+// a scene's own probes, into series.h5. Output k is written at the first step that
+// reaches t = k x interval. Output is flushed at every output time, so a
 // run that stops early keeps what it wrote.
 #include <chrono>
 #include <functional>
@@ -23,6 +24,28 @@ struct RunSummary {
   std::string error;               ///< non-empty if the run stopped on a SimulationError
 };
 
+/// Hooks of a run driven by the moorsph command (checkpoints, snapshots, progress,
+/// Ctrl-C). Every member is optional; a default RunControl is a plain run.
+struct RunControl {
+  /// Called after each time-series row is written (particle snapshots hang here).
+  std::function<void()> on_output;
+  /// Called after every step (progress display).
+  std::function<void()> on_step;
+  /// Polled before each step: true asks for a checkpoint after that step.
+  std::function<bool()> checkpoint_due;
+  /// Polled before each step: true stops the run after that step, with a checkpoint.
+  std::function<bool()> stop_requested;
+  /// Writes a checkpoint; called right after a step that followed a neighbour rebuild.
+  std::function<void()> on_checkpoint;
+  /// Index of the next output: output k is at t = k x interval. A fresh run records
+  /// output 0 at its start; a restart passes the index saved in its checkpoint.
+  long long next_output = 0;
+  /// Rebuild the neighbour lists before every step that reaches an output time or the
+  /// end time, so that a checkpoint written there restarts bit-identically and a
+  /// straight run takes exactly the same steps as a stopped-and-restarted one.
+  bool rebuild_at_outputs = false;
+};
+
 template <int D>
 class RunRecorder {
  public:
@@ -34,7 +57,12 @@ class RunRecorder {
                  const std::string& description = "");
   /// Run to end_time. A SimulationError stops the run: it is reported in the summary
   /// (and printed by `log` if given) after the output written so far is flushed.
-  RunSummary runTo(double end_time, const std::function<void(const std::string&)>& log = {});
+  RunSummary runTo(double end_time, const std::function<void(const std::string&)>& log = {},
+                   const RunControl& control = {});
+  /// Index of the next output time (what a checkpoint saves).
+  long long nextOutputIndex() const { return next_output_; }
+  /// True if the last runTo stopped on stop_requested before the end time.
+  bool stoppedEarly() const { return stopped_; }
 
  private:
   void record();
@@ -50,6 +78,8 @@ class RunRecorder {
   };
   std::vector<Entry> probes_;
   RunSummary summary_;
+  long long next_output_ = 0;
+  bool stopped_ = false;
   std::chrono::steady_clock::time_point start_;
 };
 

@@ -1,0 +1,62 @@
+#include "progress.hpp"
+
+#include <unistd.h>
+
+#include <cstdio>
+
+namespace moorsph::app {
+namespace {
+
+std::string duration(double seconds) {
+  char text[32];
+  if (seconds < 120.0) std::snprintf(text, sizeof text, "%.0f s", seconds);
+  else if (seconds < 7200.0) std::snprintf(text, sizeof text, "%.1f min", seconds / 60.0);
+  else std::snprintf(text, sizeof text, "%.1f h", seconds / 3600.0);
+  return text;
+}
+
+}  // namespace
+
+Progress::Progress(RunLog& log, double start_time, double end_time, double log_interval)
+    : log_(log), start_time_(start_time), end_time_(end_time), log_interval_(log_interval),
+      tty_(isatty(fileno(stdout)) != 0), wall_start_(std::chrono::steady_clock::now()), last_print_(wall_start_) {}
+
+std::string Progress::describe(double time, std::size_t steps, double dt) const {
+  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start_).count();
+  const double simulated = time - start_time_;
+  const double rate = wall > 0.0 ? static_cast<double>(steps - start_steps_) / wall : 0.0;
+  const double factor = wall > 0.0 ? simulated / wall : 0.0;  // simulated seconds per wall second
+  const double eta = simulated > 0.0 ? (end_time_ - time) * wall / simulated : 0.0;
+  char text[200];
+  std::snprintf(text, sizeof text, "t = %.4f / %.4g s (%3.0f%%)  %.0f steps/s  dt = %.2e s  real-time factor %.3g  ETA %s",
+                time, end_time_, 100.0 * time / end_time_, rate, dt, factor, duration(eta).c_str());
+  return text;
+}
+
+void Progress::update(double time, std::size_t steps, double dt) {
+  if (!started_) {
+    started_ = true;
+    start_steps_ = steps > 0 ? steps - 1 : 0;
+  }
+  const auto now = std::chrono::steady_clock::now();
+  const double since = std::chrono::duration<double>(now - last_print_).count();
+  if (since < (tty_ ? 0.5 : log_interval_)) return;
+  last_print_ = now;
+  if (tty_) {
+    std::printf("\r\033[K%s", describe(time, steps, dt).c_str());
+    std::fflush(stdout);
+    line_shown_ = true;
+  } else {
+    log_.line(describe(time, steps, dt));
+  }
+}
+
+void Progress::clear() {
+  if (tty_ && line_shown_) {
+    std::printf("\r\033[K");
+    std::fflush(stdout);
+    line_shown_ = false;
+  }
+}
+
+}  // namespace moorsph::app

@@ -1,0 +1,206 @@
+#include "run_scene.hpp"
+
+#include <omp.h>
+
+#include <atomic>
+#include <chrono>
+#include <csignal>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <moorsph/cases/run_recorder.hpp>
+#include <moorsph/io/checkpoint.hpp>
+#include <moorsph/io/csv_export.hpp>
+#include <moorsph/io/particle_file.hpp>
+#include <moorsph/io/scene_builder.hpp>
+#include <moorsph/io/scene_loader.hpp>
+#include "progress.hpp"
+#include "scene_series.hpp"
+
+namespace moorsph::app {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::atomic<bool> g_stop{false};
+
+extern "C" void onSignal(int) { g_stop.store(true); }
+
+std::string format(const char* fmt, double a, double b = 0.0, double c = 0.0) {
+  char text[256];
+  std::snprintf(text, sizeof text, fmt, a, b, c);
+  return text;
+}
+
+template <int D>
+int runDim(const io::SceneConfig& config, const RunOptions& o, const std::string& out) {
+  using Clock = std::chrono::steady_clock;
+  RunLog log(out + "/log.txt");
+  if (!log.ok()) {
+    std::fprintf(stderr, "error: cannot write %s/log.txt\n", out.c_str());
+    return kOutputError;
+  }
+  const std::string resolved = io::resolvedSceneYaml(config);
+  {
+    std::ofstream(out + "/scene.resolved.yaml") << resolved;
+  }
+  auto built = io::buildScene<D>(config);
+  io::Checkpoint restored;
+  const bool restarting = !o.restart.empty();
+  fluid::FluidParticles<D> particles = built.scene.fluid;
+  if (restarting) {
+    restored = io::readCheckpoint(o.restart);
+    particles = io::restoreParticles<D>(restored);
+    if (particles.size() != built.scene.fluid.size())
+      throw io::SceneError(o.restart, "", "the checkpoint holds " + std::to_string(particles.size()) +
+                                              " fluid particles, the scene " + std::to_string(built.scene.fluid.size()) +
+                                              ": it belongs to another scene");
+  }
+  fluid::FluidSimulation<D> sim(built.scene.setup, particles, built.scene.boundary);
+  if (restarting) sim.restoreClock(restored.time, static_cast<std::size_t>(restored.steps), restored.last_dt);
+
+  log.line("moorsph run " + config.file + " -> " + fs::absolute(out).string());
+  log.line("  " + std::to_string(D) + "D scene '" + config.name + "': " + std::to_string(sim.fluid().size()) +
+           " fluid, " + std::to_string(sim.walls() ? sim.walls()->particles().size() : 0) + " boundary particles, " +
+           std::to_string(omp_get_max_threads()) + " threads");
+  log.line(format("  dx = %g m, h = %g m, c_s = %g m/s", config.dx, sim.setup().h(), config.sound_speed) +
+           format(", dt <= %.3e s, end %g s", sim.cflDt(), config.end_time));
+  std::string effects;
+  for (const auto& e : sim.effectNames()) effects += " " + e;
+  log.line("  effects:" + effects + "  (method " + config.method.name + ")");
+  if (restarting) log.line(format("  restarted from t = %.6g s, step %.0f", restored.time, static_cast<double>(restored.steps)) + " (" + o.restart + ")");
+
+  io::SeriesFile series(out + "/series.h5");
+  cases::RunRecorder<D> recorder(sim, series, config.output.interval);
+  SceneSeries<D> sensors(sim, built);
+  sensors.attach(recorder);
+
+  std::unique_ptr<io::ParticleFile> particle_file;
+  long long next_snapshot = restarting ? restored.next_snapshot : 0;
+  if (config.output.particles_interval > 0.0) particle_file = std::make_unique<io::ParticleFile>(out);
+
+  Progress progress(log, sim.time(), config.end_time, o.log_interval);
+  auto last_checkpoint = Clock::now();
+  auto writeCheckpointNow = [&](const std::string& path, const std::string& reason) {
+    io::Checkpoint c = io::captureCheckpoint(sim);
+    c.scene_yaml = resolved;
+    c.reason = reason;
+    c.next_output = recorder.nextOutputIndex();
+    c.next_snapshot = next_snapshot;
+    io::writeCheckpoint(path, c);
+    last_checkpoint = Clock::now();
+    progress.clear();
+    log.line(format("checkpoint at t = %.6g s (", sim.time()) + reason + "): " + path);
+  };
+
+  cases::RunControl control;
+  control.rebuild_at_outputs = true;
+  control.next_output = restarting ? restored.next_output : 0;
+  control.on_step = [&] {
+    progress.update(sim.time(), sim.stepCount(), sim.lastDt());
+    if (o.after_step) o.after_step(sim.stepCount());
+  };
+  control.on_output = [&] {
+    if (!particle_file) return;
+    const double every = config.output.particles_interval;
+    if (sim.time() < static_cast<double>(next_snapshot) * every - 1e-12) return;
+    particle_file->write(io::takeSnapshot(sim));
+    while (static_cast<double>(next_snapshot) * every <= sim.time() + 1e-12) ++next_snapshot;
+  };
+  const double checkpoint_seconds = 60.0 * config.output.checkpoint_minutes;
+  control.checkpoint_due = [&] {
+    return checkpoint_seconds > 0.0 &&
+           std::chrono::duration<double>(Clock::now() - last_checkpoint).count() >= checkpoint_seconds;
+  };
+  control.stop_requested = [] { return g_stop.load(); };
+  bool interrupted_checkpoint = false;
+  control.on_checkpoint = [&] {
+    const bool stopping = g_stop.load();
+    writeCheckpointNow(out + "/checkpoint.h5", stopping ? "interrupt" : "interval");
+    interrupted_checkpoint = stopping;
+  };
+
+  const auto summary = recorder.runTo(config.end_time, {}, control);
+  progress.clear();
+  series.flush();
+  if (!summary.error.empty()) {
+    log.line("error: the run failed: " + summary.error);
+    std::ofstream(out + "/error.txt") << summary.error << "\n";
+    writeCheckpointNow(out + "/failure.checkpoint.h5", "failure");
+    log.line("output written so far is kept in " + fs::absolute(out).string() +
+             "; failure.checkpoint.h5 holds the state at the failure (for inspection, not for restarting)");
+    return kRunFailed;
+  }
+  if (recorder.stoppedEarly()) {
+    (void)interrupted_checkpoint;
+    log.line(format("interrupted at t = %.6g s; continue with --restart ", sim.time()) + out + "/checkpoint.h5");
+    return kInterrupted;
+  }
+  writeCheckpointNow(out + "/checkpoint.h5", "end");
+  const double steps = static_cast<double>(summary.steps - (restarting ? restored.steps : 0));
+  log.line(format("simulated %.4g s in %.0f steps, %.1f s wall", summary.simulated_time, steps, summary.wall_seconds) +
+           format(" (real-time factor %.3g, %.3g particle-steps/s)", (summary.simulated_time - (restarting ? restored.time : 0.0)) / summary.wall_seconds,
+                  steps * static_cast<double>(summary.particles) / summary.wall_seconds));
+  log.line("output: " + fs::absolute(out).string() + " (series.h5" + (particle_file ? ", particles.xmf" : "") +
+           ", scene.resolved.yaml, log.txt, checkpoint.h5)");
+  return kSuccess;
+}
+
+}  // namespace
+
+void requestStop() { g_stop.store(true); }
+
+int runScene(const RunOptions& o) {
+  std::vector<std::string> sets = o.sets;
+  if (o.end > 0.0) sets.push_back(format("end_time=%.17g", o.end));
+  io::SceneConfig config;
+  try {
+    config = io::loadSceneFile(o.scene, sets);
+  } catch (const io::SceneError& e) {
+    std::fprintf(stderr, "error: %s\n", e.what());
+    return kBadInput;
+  }
+  std::string out = o.out;
+  if (out.empty()) {
+    out = !o.restart.empty() ? fs::path(o.restart).parent_path().string() + ".restart" : "moorsph-output/" + config.name;
+  }
+  std::error_code ec;
+  fs::create_directories(out, ec);
+  if (ec) {
+    std::fprintf(stderr, "error: cannot create %s: %s\n", out.c_str(), ec.message().c_str());
+    return kOutputError;
+  }
+  if (o.threads > 0) omp_set_num_threads(o.threads);
+  g_stop.store(false);
+  auto previous_int = std::signal(SIGINT, onSignal);
+  auto previous_term = std::signal(SIGTERM, onSignal);
+  int code = kSuccess;
+  try {
+    code = config.dim == 2 ? runDim<2>(config, o, out) : runDim<3>(config, o, out);
+  } catch (const io::SceneError& e) {
+    std::fprintf(stderr, "error: %s\n", e.what());
+    code = kBadInput;
+  } catch (const std::invalid_argument& e) {
+    std::fprintf(stderr, "error: %s: %s\n", o.scene.c_str(), e.what());
+    code = kBadInput;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "error: %s\n", e.what());
+    code = !o.restart.empty() && std::string(e.what()).find(o.restart) != std::string::npos ? kBadInput : kOutputError;
+  }
+  std::signal(SIGINT, previous_int);
+  std::signal(SIGTERM, previous_term);
+  return code;
+}
+
+int exportRun(const std::string& directory) {
+  try {
+    const auto files = io::exportSeriesCsv(directory);
+    std::printf("wrote %zu files to %s/csv\n", files.size(), directory.c_str());
+    return kSuccess;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "error: %s\n", e.what());
+    return kBadInput;
+  }
+}
+
+}  // namespace moorsph::app

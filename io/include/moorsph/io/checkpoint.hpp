@@ -1,0 +1,45 @@
+#pragma once
+// Checkpoints: everything a run needs to continue bit-identically (same thread count).
+// The fluid state arrays are saved in their storage order (sorted by cell after the
+// neighbour rebuild the run requested before the step it checkpoints after), with
+// the clock, the output counters and the resolved scene. The boundary is rebuilt from
+// the scene on restart, so a restart may change what does not alter the particle set
+// (end time, output cadence). Written atomically: to PATH.tmp, then renamed.
+//
+// File layout (HDF5): attributes dim, time [s], last_dt [s], steps, next_output,
+// next_snapshot, scene (YAML text), reason; datasets r (N,D) [m], v (N,D) [m/s],
+// rho (N) [kg/m^3], m (N) [kg], id (N).
+#include <cstdint>
+#include <string>
+#include <vector>
+#include <moorsph/fluid/fluid_simulation.hpp>
+
+namespace moorsph::io {
+
+struct Checkpoint {
+  int dim = 2;
+  double time = 0.0;
+  double last_dt = 0.0;
+  std::int64_t steps = 0;
+  std::int64_t next_output = 0;    ///< index of the next time-series output
+  std::int64_t next_snapshot = 0;  ///< index of the next particle snapshot
+  std::string scene_yaml;
+  std::string reason;              ///< "end", "interval", "interrupt", "failure"
+  std::vector<double> r, v, rho, m;  ///< r and v hold D values per particle
+  std::vector<std::int64_t> id;
+  std::size_t size() const { return rho.size(); }
+};
+
+template <int D>
+Checkpoint captureCheckpoint(const fluid::FluidSimulation<D>& sim);
+
+/// The saved fluid particles, in their saved order, for the simulation's constructor.
+template <int D>
+fluid::FluidParticles<D> restoreParticles(const Checkpoint& checkpoint);
+
+/// Write to `path` atomically. Throws std::runtime_error on failure.
+void writeCheckpoint(const std::string& path, const Checkpoint& checkpoint);
+/// Throws std::runtime_error naming the path if it is missing or not a checkpoint.
+Checkpoint readCheckpoint(const std::string& path);
+
+}  // namespace moorsph::io

@@ -1,0 +1,107 @@
+#include <moorsph/io/checkpoint.hpp>
+
+#include <filesystem>
+#include <stdexcept>
+#include "h5_helpers.hpp"
+
+namespace moorsph::io {
+
+template <int D>
+Checkpoint captureCheckpoint(const fluid::FluidSimulation<D>& sim) {
+  const auto& f = sim.fluid();
+  Checkpoint c;
+  c.dim = D;
+  c.time = sim.time();
+  c.last_dt = sim.lastDt();
+  c.steps = static_cast<std::int64_t>(sim.stepCount());
+  c.r.reserve(D * f.size());
+  c.v.reserve(D * f.size());
+  for (std::size_t i = 0; i < f.size(); ++i)
+    for (int d = 0; d < D; ++d) {
+      c.r.push_back(f.r[i][d]);
+      c.v.push_back(f.v[i][d]);
+    }
+  c.rho = f.rho;
+  c.m = f.m;
+  c.id = f.id;
+  return c;
+}
+
+template <int D>
+fluid::FluidParticles<D> restoreParticles(const Checkpoint& c) {
+  if (c.dim != D) throw std::runtime_error("checkpoint is " + std::to_string(c.dim) + "D, the scene " + std::to_string(D) + "D");
+  fluid::FluidParticles<D> f;
+  const std::size_t n = c.size();
+  f.r.resize(n);
+  f.v.resize(n);
+  for (std::size_t i = 0; i < n; ++i)
+    for (int d = 0; d < D; ++d) {
+      f.r[i][d] = c.r[D * i + d];
+      f.v[i][d] = c.v[D * i + d];
+    }
+  f.rho = c.rho;
+  f.m = c.m;
+  f.id = c.id;
+  return f;
+}
+
+template Checkpoint captureCheckpoint<2>(const fluid::FluidSimulation<2>&);
+template Checkpoint captureCheckpoint<3>(const fluid::FluidSimulation<3>&);
+template fluid::FluidParticles<2> restoreParticles<2>(const Checkpoint&);
+template fluid::FluidParticles<3> restoreParticles<3>(const Checkpoint&);
+
+void writeCheckpoint(const std::string& path, const Checkpoint& c) {
+  const std::string tmp = path + ".tmp";
+  {
+    h5::Handle file(H5Fcreate(tmp.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), H5Fclose, "create " + tmp);
+    h5::writeStringAttribute(file, "format", "moorsph checkpoint 1");
+    h5::writeDoubleAttribute(file, "dim", c.dim);
+    h5::writeDoubleAttribute(file, "time", c.time);
+    h5::writeDoubleAttribute(file, "last_dt", c.last_dt);
+    h5::writeStringAttribute(file, "scene", c.scene_yaml);
+    h5::writeStringAttribute(file, "reason", c.reason);
+    h5::writeInt64(file, "counters", {c.steps, c.next_output, c.next_snapshot}, "1");
+    h5::writeDoubles(file, "r", c.r, c.dim, "m");
+    h5::writeDoubles(file, "v", c.v, c.dim, "m/s");
+    h5::writeDoubles(file, "rho", c.rho, 1, "kg/m^3");
+    h5::writeDoubles(file, "m", c.m, 1, "kg");
+    h5::writeInt64(file, "id", c.id, "1");
+    if (H5Fflush(file, H5F_SCOPE_GLOBAL) < 0) throw std::runtime_error("HDF5: flush " + tmp);
+  }
+  std::filesystem::rename(tmp, path);  // atomic on one file system: never a half-written checkpoint
+}
+
+Checkpoint readCheckpoint(const std::string& path) {
+  if (!std::filesystem::exists(path)) throw std::runtime_error(path + ": no such checkpoint");
+  H5E_auto2_t func = nullptr;
+  void* data = nullptr;
+  H5Eget_auto2(H5E_DEFAULT, &func, &data);
+  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);  // report our own message, not HDF5's stack
+  const hid_t id = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  H5Eset_auto2(H5E_DEFAULT, func, data);
+  h5::Handle file(id, H5Fclose, path + ": not an HDF5 file");
+  if (!h5::hasAttribute(file, "format") || h5::readStringAttribute(file, "format") != "moorsph checkpoint 1")
+    throw std::runtime_error(path + ": not a moorsph checkpoint");
+  Checkpoint c;
+  c.dim = static_cast<int>(h5::readDoubleAttribute(file, "dim"));
+  c.time = h5::readDoubleAttribute(file, "time");
+  c.last_dt = h5::readDoubleAttribute(file, "last_dt");
+  c.scene_yaml = h5::readStringAttribute(file, "scene");
+  c.reason = h5::readStringAttribute(file, "reason");
+  const auto counters = h5::readInt64(file, "counters");
+  if (counters.size() != 3) throw std::runtime_error(path + ": bad counters");
+  c.steps = counters[0];
+  c.next_output = counters[1];
+  c.next_snapshot = counters[2];
+  c.r = h5::readDoubles(file, "r");
+  c.v = h5::readDoubles(file, "v");
+  c.rho = h5::readDoubles(file, "rho");
+  c.m = h5::readDoubles(file, "m");
+  c.id = h5::readInt64(file, "id");
+  const std::size_t n = c.rho.size();
+  if (c.r.size() != n * c.dim || c.v.size() != n * c.dim || c.m.size() != n || c.id.size() != n)
+    throw std::runtime_error(path + ": arrays of inconsistent sizes");
+  return c;
+}
+
+}  // namespace moorsph::io

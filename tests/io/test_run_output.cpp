@@ -1,0 +1,61 @@
+// A short run of a scene file writes the run directory (series.h5, particles.h5 +
+// particles.xmf, scene.resolved.yaml, log.txt, checkpoint.h5); an independent reader
+// (h5py, tests/io/check_output.py) checks shapes, units and values; `export --csv`
+// writes one CSV per series column with units in the header.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include "run/run_scene.hpp"
+#include "scene_text.hpp"
+
+using namespace moorsph;
+
+TEST(RunOutput, RunDirectoryReadByH5py) {
+  const std::string dir = testing::TempDir() + "moorsph_run_output";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  const std::string scene = test::writeScene(dir + "/scene.yaml", test::kSmallDamBreak);
+  app::RunOptions o;
+  o.scene = scene;
+  o.out = dir + "/run";
+  o.threads = 1;
+  ASSERT_EQ(app::runScene(o), app::kSuccess);
+
+  const std::string source = std::getenv("MOORSPH_SOURCE_DIR") ? std::getenv("MOORSPH_SOURCE_DIR") : ".";
+  const std::string log = dir + "/h5py.txt";
+  const int status = std::system(("/usr/bin/python3 " + source + "/tests/io/check_output.py " + o.out + " 200 > " + log +
+                                  " 2>&1").c_str());
+  std::ifstream in(log);
+  const std::string report((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const int code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  if (code == 77) GTEST_SKIP() << report;
+  EXPECT_EQ(code, 0) << report;
+
+  ASSERT_EQ(app::exportRun(o.out), app::kSuccess);
+  std::ifstream csv(o.out + "/csv/energy.kinetic.csv");
+  std::string header, first;
+  std::getline(csv, header);
+  std::getline(csv, first);
+  EXPECT_EQ(header, "time [s],kinetic [J]");
+  EXPECT_EQ(first.rfind("0,0", 0), 0u) << first;
+  EXPECT_TRUE(std::filesystem::exists(o.out + "/csv/gauges.G_col.csv"));
+  EXPECT_TRUE(std::filesystem::exists(o.out + "/csv/probes.P_floor_reaction.csv"));
+  EXPECT_TRUE(std::filesystem::exists(o.out + "/csv/timing.pairs.csv"));
+}
+
+TEST(RunOutput, BadSceneIsRejectedBeforeRunning) {
+  const std::string dir = testing::TempDir() + "moorsph_bad_scene";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  std::string text = test::kSmallDamBreak;
+  text += "bodies: []\n";
+  app::RunOptions o;
+  o.scene = test::writeScene(dir + "/scene.yaml", text);
+  o.out = dir + "/run";
+  EXPECT_EQ(app::runScene(o), app::kBadInput);
+  EXPECT_FALSE(std::filesystem::exists(o.out + "/series.h5"));
+  EXPECT_EQ(app::exportRun(dir + "/nothing"), app::kBadInput);
+}
