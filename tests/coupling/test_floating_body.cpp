@@ -12,15 +12,12 @@
 #include <moorsph/fluid/fluid_simulation.hpp>
 #include <moorsph/fluid/tank_scene.hpp>
 
+#include "floating_box_scene.hpp"
+
 using namespace moorsph;
+using test_scenes::FloatingBox;
 
 namespace {
-
-struct FloatingBox {
-  double tank_length = 0.8, depth = 0.2, dx = 0.01, width = 0.2, height = 0.1, density_ratio = 0.5;
-  double mass() const { return density_ratio * 1000.0 * width * height; }  // kg per metre of span
-  double draught() const { return mass() / (1000.0 * width); }             // Archimedes, 2D
-};
 
 /// Records, after each corrector, the wrench the coupling applied, the reactions
 /// it was taken from and the body's velocity.
@@ -52,43 +49,13 @@ class StepProbe final : public fluid::FluidEffect<2> {
 }  // namespace
 
 TEST(FloatingBody, BoxFloatsAtArchimedesDraughtAndCouplingHoldsPredictedWrench) {
-  const FloatingBox box;
-  fluid::TankSpec<2> spec;
-  spec.size = fluid::Vec<2>(box.tank_length, 0.4);
-  spec.water_upper = fluid::Vec<2>(box.tank_length, box.depth);
-  spec.dx = box.dx;
-  spec.fluid.sound_speed = 20.0;  // 10 sqrt(2 g depth)
-  spec.fluid.mu = 0.05;           // raised to damp the sloshing the box radiates (METHOD 1 allows it)
-  spec.fluid.effects = {"pressure", "viscosity", "xsph", "gravity", "walls"};
-  auto scene = fluid::buildTankScene<2>(spec);
-
-  // Box at the Archimedes draught below the still level of the final state, which is
-  // raised by the displaced area: level = (water area + w d) / L.
-  fluid::FluidParticles<2> water;
-  const double level0 = box.depth;  // level before the box is placed
-  const fluid::Vec<2> centre(box.tank_length / 2, level0 - box.draught() + box.height / 2);
-  for (std::size_t i = 0; i < scene.fluid.size(); ++i) {
-    const auto& r = scene.fluid.r[i];
-    if (std::abs(r[0] - centre[0]) < box.width / 2 && std::abs(r[1] - centre[1]) < box.height / 2) continue;
-    water.add(r, scene.fluid.v[i], scene.fluid.rho[i], scene.fluid.m[i]);
-  }
-  const double level = (water.size() * box.dx * box.dx + box.width * box.draught()) / box.tank_length;
-  const fluid::Vec<2> half(box.width / 2, box.height / 2);
-  scene.boundary.addSurface(fluid::sampleBoxSurface<2>(centre - half, centre + half, box.dx, fluid::allFaces<2>(),
-                                                       fluid::NormalSide::Outward),
-                            fluid::SurfaceInfo{"box", true, true, Eigen::Vector3d(centre[0], centre[1], 0.0)});
-  fluid::FluidSimulation<2> sim(scene.setup, water, scene.boundary);
-
-  bodies::MultibodySystem system;
-  bodies::RigidBodySpec body;
-  body.name = "box";
-  body.mass = box.mass();
-  body.mobilizer = bodies::Mobilizer::Planar;
-  body.fixedDofs[static_cast<int>(bodies::Dof::RotationZ)] = true;  // heave and surge only: Newton check below
-  body.inertiaAboutCom = Eigen::Matrix3d::Identity() * box.mass() * (box.width * box.width + box.height * box.height) / 12;
-  body.initial.position = Eigen::Vector3d(centre[0], centre[1], 0.0);
-  system.addBody(body);
+  test_scenes::FloatingBox box;
+  box.fix_rotation = true;  // heave and surge only: Newton check below
+  auto scene = test_scenes::buildFloatingBox(box);
+  auto& sim = *scene.fluid;
+  auto& system = *scene.system;
   system.initialize();
+  const double level = scene.still_level;
   auto link = std::make_unique<coupling::BodyCoupling<2>>(system, sim.updWalls(), std::vector<coupling::CoupledBody>{{0, 1}},
                                                           coupling::CouplingOptions{0.2, 0.0});
   auto probe = std::make_unique<StepProbe>(*link, *sim.walls(), system);
