@@ -59,3 +59,20 @@ TEST(RunOutput, BadSceneIsRejectedBeforeRunning) {
   EXPECT_FALSE(std::filesystem::exists(o.out + "/series.h5"));
   EXPECT_EQ(app::exportRun(dir + "/nothing"), app::kBadInput);
 }
+
+TEST(RunOutput, ExampleScenesRun) {
+  // Every annotated example under cases/ runs (a few steps each: end 0.01 s).
+  const std::string source = std::getenv("MOORSPH_SOURCE_DIR") ? std::getenv("MOORSPH_SOURCE_DIR") : ".";
+  for (const char* name : {"dam_break_2d", "dam_break_3d", "hydrostatic_tank_2d"}) {
+    SCOPED_TRACE(name);
+    app::RunOptions o;
+    o.scene = source + "/cases/" + name + ".yaml";
+    o.out = testing::TempDir() + "moorsph_example_" + name;
+    o.end = 0.01;
+    o.threads = 1;
+    o.sets = {"output.interval=0.005"};
+    std::filesystem::remove_all(o.out);
+    EXPECT_EQ(app::runScene(o), app::kSuccess);
+    EXPECT_TRUE(std::filesystem::exists(o.out + "/checkpoint.h5"));
+  }
+}
