@@ -1,0 +1,177 @@
+#include <moorsph/io/mesh_sampling.hpp>
+
+#include <cmath>
+#include <cstdint>
+#include <stdexcept>
+#include <unordered_map>
+#include <vector>
+
+namespace moorsph::io {
+namespace {
+
+/// Points with their groups of normals, found by a hash grid of cell `cell`.
+class PointSet {
+ public:
+  explicit PointSet(double cell) : cell_(cell) {}
+
+  /// Index of the point nearest to p within `radius` (radius <= 2 cells), or -1.
+  int find(const Eigen::Vector3d& p, double radius) const {
+    const auto c = cellOf(p);
+    int nearest = -1;
+    double best = radius * radius;
+    for (int dx = -2; dx <= 2; ++dx)
+      for (int dy = -2; dy <= 2; ++dy)
+        for (int dz = -2; dz <= 2; ++dz) {
+          const auto it = cells_.find(key(c[0] + dx, c[1] + dy, c[2] + dz));
+          if (it == cells_.end()) continue;
+          for (int k : it->second) {
+            const double d2 = (points_[k] - p).squaredNorm();
+            if (d2 < best) {
+              best = d2;
+              nearest = k;
+            }
+          }
+        }
+    return nearest;
+  }
+
+  void add(const Eigen::Vector3d& p, const Eigen::Vector3d& normal) {
+    const int k = static_cast<int>(points_.size());
+    points_.push_back(p);
+    groups_.emplace_back();
+    const auto c = cellOf(p);
+    cells_[key(c[0], c[1], c[2])].push_back(k);
+    addNormal(k, normal);
+  }
+  const Eigen::Vector3d& point(int k) const { return points_[k]; }
+
+  /// Join `normal` to the group within 30 degrees, or start a new group (a sharp edge).
+  void addNormal(int k, const Eigen::Vector3d& normal) {
+    auto& groups = groups_[k];
+    const double cos30 = std::cos(M_PI / 6.0);
+    for (auto& g : groups)
+      if (g.normalized().dot(normal) > cos30) {
+        g += normal;
+        return;
+      }
+    groups.push_back(normal);
+  }
+
+  fluid::BoundaryParticles<3> particles(double sign) const {
+    fluid::BoundaryParticles<3> out;
+    for (std::size_t k = 0; k < points_.size(); ++k) {
+      std::vector<fluid::Vec<3>> normals;
+      for (const auto& g : groups_[k]) normals.push_back(sign * g.normalized());
+      out.add(points_[k], normals, 0);
+    }
+    return out;
+  }
+
+ private:
+  std::array<std::int64_t, 3> cellOf(const Eigen::Vector3d& p) const {
+    return {static_cast<std::int64_t>(std::floor(p.x() / cell_)), static_cast<std::int64_t>(std::floor(p.y() / cell_)),
+            static_cast<std::int64_t>(std::floor(p.z() / cell_))};
+  }
+  static std::int64_t key(std::int64_t i, std::int64_t j, std::int64_t k) {
+    return (i & 0x1FFFFF) | ((j & 0x1FFFFF) << 21) | ((k & 0x1FFFFF) << 42);
+  }
+  double cell_;
+  std::vector<Eigen::Vector3d> points_;
+  std::vector<std::vector<Eigen::Vector3d>> groups_;
+  std::unordered_map<std::int64_t, std::vector<int>> cells_;
+};
+
+// Candidates closer than kAcceptFraction x spacing to a particle are dropped (so
+// fine meshes are not over-sampled: the wall force grows with the particle density);
+// those closer than kMergeFraction x spacing add their face normal to it.
+constexpr double kAcceptFraction = 0.75;
+constexpr double kMergeFraction = 0.25;
+
+int steps(double length, double spacing) { return std::max(1, static_cast<int>(std::ceil(length / spacing - 1e-9))); }
+
+}  // namespace
+
+fluid::BoundaryParticles<3> sampleMeshSurface(const TriangleMesh& mesh, double spacing, fluid::NormalSide side) {
+  if (!(spacing > 0.0)) throw std::invalid_argument("mesh sampling: spacing must be positive");
+  const double volume = mesh.signedVolume();
+  if (volume == 0.0) throw std::invalid_argument("mesh sampling: the mesh encloses no volume (is it closed?)");
+  // Outward normals of the enclosed volume, times -1 for a container.
+  const double sign = (volume > 0.0 ? 1.0 : -1.0) * (side == fluid::NormalSide::Outward ? 1.0 : -1.0);
+  const double accept = kAcceptFraction * spacing;  // no two particles closer than this
+  const double merge = kMergeFraction * spacing;    // candidates this close add their normal
+  PointSet set(0.5 * spacing);
+  auto offer = [&](const Eigen::Vector3d& q, const Eigen::Vector3d& normal) {
+    const int near = set.find(q, accept);
+    if (near < 0) set.add(q, normal);
+    else if ((set.point(near) - q).norm() < merge) set.addNormal(near, normal);
+  };
+  // Candidates in three passes: vertices, the coarse lattices (steps <= spacing; a box
+  // gives exactly its lattice), then fine lattices (steps <= spacing/2) that fill what
+  // the coarse ones leave between differently shaped or small triangles.
+  // Each lattice pass completes before the longest edges are offered, so an edge
+  // point is judged against both neighbouring triangles' lattices.
+  struct Pass {
+    double fraction;
+    bool lattice;
+  };
+  for (const Pass pass : {Pass{0.0, false}, Pass{1.0, true}, Pass{1.0, false}, Pass{0.5, true}, Pass{0.5, false}}) {
+    const double fraction = pass.fraction;
+    for (const auto& t : mesh.triangles) {
+      const Eigen::Vector3d p[3] = {mesh.vertices[t[0]], mesh.vertices[t[1]], mesh.vertices[t[2]]};
+      const Eigen::Vector3d cross = (p[1] - p[0]).cross(p[2] - p[0]);
+      if (cross.norm() == 0.0) continue;  // degenerate: no area, no normal
+      const Eigen::Vector3d normal = cross.normalized();
+      if (fraction == 0.0) {
+        for (const auto& v : p) offer(v, normal);
+        continue;
+      }
+      // The vertex opposite the longest edge is the lattice origin.
+      int o = 0;
+      double best = -1.0;
+      for (int k = 0; k < 3; ++k) {
+        const double len = (p[(k + 2) % 3] - p[(k + 1) % 3]).norm();
+        if (len > best) {
+          best = len;
+          o = k;
+        }
+      }
+      const Eigen::Vector3d origin = p[o], e1 = p[(o + 1) % 3] - origin, e2 = p[(o + 2) % 3] - origin;
+      if (!pass.lattice) {
+        const int n3 = steps(best, fraction * spacing);  // the longest edge itself
+        for (int k = 0; k <= n3; ++k) offer(p[(o + 1) % 3] + (static_cast<double>(k) / n3) * (e2 - e1), normal);
+        continue;
+      }
+      const int n1 = steps(e1.norm(), fraction * spacing), n2 = steps(e2.norm(), fraction * spacing);
+      for (int i = 0; i <= n1; ++i)
+        for (int j = 0; j <= n2; ++j) {
+          const double a = static_cast<double>(i) / n1, b = static_cast<double>(j) / n2;
+          if (a + b > 1.0 + 1e-9) break;
+          offer(origin + a * e1 + b * e2, normal);
+        }
+    }
+  }
+  return set.particles(sign);
+}
+
+bool meshContains(const TriangleMesh& mesh, const Eigen::Vector3d& p) {
+  // An irrational-ish direction makes hits on edges and vertices practically impossible.
+  const Eigen::Vector3d dir = Eigen::Vector3d(1.0, 0.0003141592653, 0.0002718281828).normalized();
+  int crossings = 0;
+  for (const auto& t : mesh.triangles) {
+    const Eigen::Vector3d& a = mesh.vertices[t[0]];
+    const Eigen::Vector3d e1 = mesh.vertices[t[1]] - a, e2 = mesh.vertices[t[2]] - a;
+    const Eigen::Vector3d h = dir.cross(e2);
+    const double det = e1.dot(h);
+    if (std::abs(det) < 1e-300) continue;
+    const Eigen::Vector3d s = p - a;
+    const double u = s.dot(h) / det;
+    if (u < 0.0 || u > 1.0) continue;
+    const Eigen::Vector3d q = s.cross(e1);
+    const double v = dir.dot(q) / det;
+    if (v < 0.0 || u + v > 1.0) continue;
+    if (e2.dot(q) / det > 0.0) ++crossings;
+  }
+  return crossings % 2 == 1;
+}
+
+}  // namespace moorsph::io

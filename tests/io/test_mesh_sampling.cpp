@@ -1,0 +1,184 @@
+// Triangle meshes (STL ASCII/binary, OBJ) sampled into boundary particles: a box mesh
+// gives exactly fluid::sampleBoxSurface's particles and normals; a sphere mesh gives
+// single outward radial normals at spacing <= s; inside tests by ray parity.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <fstream>
+#include <map>
+#include <moorsph/io/mesh_sampling.hpp>
+
+using namespace moorsph;
+using Eigen::Vector3d;
+
+namespace {
+
+/// The 12 triangles of the box [lo, hi], wound counter-clockwise seen from outside.
+io::TriangleMesh boxMesh(const Vector3d& lo, const Vector3d& hi) {
+  io::TriangleMesh m;
+  for (int k = 0; k < 8; ++k) m.vertices.emplace_back(k & 1 ? hi.x() : lo.x(), k & 2 ? hi.y() : lo.y(), k & 4 ? hi.z() : lo.z());
+  const int quads[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
+  for (const auto& q : quads) {
+    m.triangles.push_back({q[0], q[1], q[2]});
+    m.triangles.push_back({q[0], q[2], q[3]});
+  }
+  return m;
+}
+
+void writeAsciiStl(const std::string& path, const io::TriangleMesh& m) {
+  std::ofstream out(path);
+  out << "solid box\n";
+  for (const auto& t : m.triangles) {
+    out << " facet normal 0 0 0\n  outer loop\n";
+    for (int v : t) out << "   vertex " << m.vertices[v].x() << " " << m.vertices[v].y() << " " << m.vertices[v].z() << "\n";
+    out << "  endloop\n endfacet\n";
+  }
+  out << "endsolid box\n";
+}
+
+void writeBinaryStl(const std::string& path, const io::TriangleMesh& m) {
+  std::ofstream out(path, std::ios::binary);
+  char header[80] = "solid binary file starting with the word solid";
+  out.write(header, 80);
+  const std::uint32_t n = m.triangles.size();
+  out.write(reinterpret_cast<const char*>(&n), 4);
+  for (const auto& t : m.triangles) {
+    float record[12] = {0, 0, 0};
+    for (int v = 0; v < 3; ++v)
+      for (int d = 0; d < 3; ++d) record[3 + 3 * v + d] = static_cast<float>(m.vertices[t[v]][d]);
+    out.write(reinterpret_cast<const char*>(record), 48);
+    const std::uint16_t attributes = 0;
+    out.write(reinterpret_cast<const char*>(&attributes), 2);
+  }
+}
+
+/// An icosphere: the icosahedron subdivided `levels` times, projected on the sphere.
+io::TriangleMesh sphereMesh(double radius, int levels) {
+  io::TriangleMesh m;
+  const double t = (1.0 + std::sqrt(5.0)) / 2.0;
+  const double v[12][3] = {{-1, t, 0}, {1, t, 0}, {-1, -t, 0}, {1, -t, 0}, {0, -1, t}, {0, 1, t},
+                           {0, -1, -t}, {0, 1, -t}, {t, 0, -1}, {t, 0, 1}, {-t, 0, -1}, {-t, 0, 1}};
+  for (const auto& p : v) m.vertices.push_back(Vector3d(p[0], p[1], p[2]).normalized());
+  m.triangles = {{0, 11, 5}, {0, 5, 1}, {0, 1, 7}, {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
+                 {11, 10, 2}, {10, 7, 6}, {7, 1, 8}, {3, 9, 4}, {3, 4, 2}, {3, 2, 6}, {3, 6, 8},
+                 {3, 8, 9}, {4, 9, 5}, {2, 4, 11}, {6, 2, 10}, {8, 6, 7}, {9, 8, 1}};
+  for (int l = 0; l < levels; ++l) {
+    std::map<std::pair<int, int>, int> middle;
+    auto mid = [&](int a, int b) {
+      const auto key = std::minmax(a, b);
+      const auto it = middle.find(key);
+      if (it != middle.end()) return it->second;
+      m.vertices.push_back((m.vertices[a] + m.vertices[b]).normalized());
+      return middle[key] = static_cast<int>(m.vertices.size()) - 1;
+    };
+    std::vector<std::array<int, 3>> finer;
+    for (const auto& tri : m.triangles) {
+      const int a = mid(tri[0], tri[1]), b = mid(tri[1], tri[2]), c = mid(tri[2], tri[0]);
+      finer.push_back({tri[0], a, c});
+      finer.push_back({tri[1], b, a});
+      finer.push_back({tri[2], c, b});
+      finer.push_back({a, b, c});
+    }
+    m.triangles = finer;
+  }
+  for (auto& p : m.vertices) p *= radius;
+  return m;
+}
+
+/// Every particle of `a` has one in `b` at the same place with the same normals.
+void expectSameParticles(const fluid::BoundaryParticles<3>& a, const fluid::BoundaryParticles<3>& b) {
+  ASSERT_EQ(a.size(), b.size());
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    std::size_t match = b.size();
+    for (std::size_t j = 0; j < b.size(); ++j)
+      if ((a.r[i] - b.r[j]).norm() < 1e-12) match = j;
+    ASSERT_LT(match, b.size()) << "no particle at " << a.r[i].transpose();
+    ASSERT_EQ(a.normalCount(i), b.normalCount(match)) << a.r[i].transpose();
+    for (std::uint32_t x = a.normal_begin[i]; x < a.normal_begin[i + 1]; ++x) {
+      bool found = false;
+      for (std::uint32_t y = b.normal_begin[match]; y < b.normal_begin[match + 1]; ++y)
+        found = found || (a.normals[x] - b.normals[y]).norm() < 1e-12;
+      EXPECT_TRUE(found) << a.r[i].transpose();
+    }
+  }
+}
+
+}  // namespace
+
+TEST(MeshSampling, BoxMeshGivesTheBoxLattice) {
+  const Vector3d lo(0.0, 0.0, 0.0), hi(0.1, 0.06, 0.05);
+  const auto reference = fluid::sampleBoxSurface<3>(lo, hi, 0.01, fluid::allFaces<3>(), fluid::NormalSide::Outward);
+  const std::string path = testing::TempDir() + "box.stl";
+  writeAsciiStl(path, boxMesh(lo, hi));
+  const auto mesh = io::readMesh(path);
+  EXPECT_EQ(mesh.vertices.size(), 8u);  // STL copies welded
+  EXPECT_NEAR(mesh.signedVolume(), 0.1 * 0.06 * 0.05, 1e-15);
+  expectSameParticles(reference, io::sampleMeshSurface(mesh, 0.01, fluid::NormalSide::Outward));
+  // Inward normals for a container, the same lattice.
+  const auto tank = fluid::sampleBoxSurface<3>(lo, hi, 0.01, fluid::allFaces<3>(), fluid::NormalSide::Inward);
+  expectSameParticles(tank, io::sampleMeshSurface(mesh, 0.01, fluid::NormalSide::Inward));
+}
+
+TEST(MeshSampling, BinaryStlAndObjWithReversedWinding) {
+  const Vector3d lo(-0.02, 0.01, 0.0), hi(0.05, 0.04, 0.03);
+  auto box = boxMesh(lo, hi);
+  const auto reference = fluid::sampleBoxSurface<3>(lo, hi, 0.007, fluid::allFaces<3>(), fluid::NormalSide::Outward);
+  const std::string stl = testing::TempDir() + "box_binary.stl";
+  writeBinaryStl(stl, box);
+  const auto from_binary = io::readMesh(stl);
+  EXPECT_EQ(from_binary.triangles.size(), 12u);
+  EXPECT_NEAR(from_binary.signedVolume(), 0.07 * 0.03 * 0.03, 1e-9);  // float precision
+  // OBJ with quads (split into fans), 1-based and negative indices, inward winding.
+  const std::string obj = testing::TempDir() + "box.obj";
+  {
+    std::ofstream out(obj);
+    out << "# box\n";
+    for (const auto& v : box.vertices) out << "v " << v.x() << " " << v.y() << " " << v.z() << "\n";
+    const int quads[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
+    for (const auto& q : quads) out << "f " << q[3] + 1 << "/1 " << q[2] + 1 << "//2 " << q[1] + 1 << " " << q[0] - 8 << "\n";
+  }
+  const auto from_obj = io::readMesh(obj);
+  EXPECT_EQ(from_obj.triangles.size(), 12u);
+  EXPECT_LT(from_obj.signedVolume(), 0.0);  // wound inward in the file...
+  expectSameParticles(reference, io::sampleMeshSurface(from_obj, 0.007, fluid::NormalSide::Outward));  // ...normals still out
+  EXPECT_THROW(io::readMesh(testing::TempDir() + "missing.obj"), std::runtime_error);
+}
+
+TEST(MeshSampling, SphereHasRadialNormalsAtTheSpacing) {
+  const double radius = 0.1, s = 0.01;
+  // A coarse mesh (edges ~1.3 s) and a fine one (edges ~0.33 s, 20480 triangles): both
+  // sampled at about one particle per s^2, not at every vertex.
+  for (const int levels : {3, 5}) {
+    SCOPED_TRACE(levels);
+    const auto mesh = sphereMesh(radius, levels);
+    const auto b = io::sampleMeshSurface(mesh, s, fluid::NormalSide::Outward);
+    double min_gap = 1e9, worst_cos = 1.0;
+    for (std::size_t i = 0; i < b.size(); ++i) {
+      ASSERT_EQ(b.normalCount(i), 1u);  // smooth: one averaged normal
+      worst_cos = std::min(worst_cos, b.normals[b.normal_begin[i]].dot(b.r[i].normalized()));
+      for (std::size_t j = i + 1; j < b.size(); ++j) min_gap = std::min(min_gap, (b.r[i] - b.r[j]).norm());
+    }
+    EXPECT_GT(worst_cos, 0.98);
+    EXPECT_GE(min_gap, 0.75 * s * (1.0 - 1e-9));
+    // No hole: every triangle centroid has a particle within the spacing.
+    double worst_cover = 0.0;
+    for (const auto& t : mesh.triangles) {
+      const Vector3d c = (mesh.vertices[t[0]] + mesh.vertices[t[1]] + mesh.vertices[t[2]]) / 3.0;
+      double nearest = 1e9;
+      for (std::size_t j = 0; j < b.size(); ++j) nearest = std::min(nearest, (c - b.r[j]).norm());
+      worst_cover = std::max(worst_cover, nearest);
+    }
+    EXPECT_LE(worst_cover, s);
+    const double per_area = b.size() * s * s / mesh.area();
+    EXPECT_GT(per_area, 0.8);
+    EXPECT_LT(per_area, 1.3);
+    std::printf("levels %d: %zu particles, %.3f per s^2, closest pair %.3f s, worst cover %.3f s\n", levels, b.size(),
+                per_area, min_gap / s, worst_cover / s);
+  }
+  const auto mesh = sphereMesh(radius, 3);
+  EXPECT_TRUE(io::meshContains(mesh, Vector3d(0.01, 0.02, -0.03)));
+  EXPECT_FALSE(io::meshContains(mesh, Vector3d(0.08, 0.08, 0.0)));
+  EXPECT_FALSE(io::meshContains(mesh, Vector3d(0.5, 0.0, 0.0)));
+}
