@@ -130,8 +130,9 @@ template <int D>
 SurfaceWrench Walls<D>::calcSurfaceWrench(std::size_t surface, const Vec<D>& point) const {
   SurfaceWrench w;
   const BoundaryParticles<D>& b = geometry_.particles;
-  for (std::size_t k = 0; k < b.size(); ++k) {
-    if (b.surface[k] != surface || !tracked_[k]) continue;
+  const auto [first, last] = ranges_.at(surface);  // a surface is one contiguous range
+  for (std::size_t k = first; k < last; ++k) {
+    if (!tracked_[k]) continue;
     Eigen::Vector3d f = Eigen::Vector3d::Zero();
     Eigen::Vector3d arm = Eigen::Vector3d::Zero();
     f.template head<D>() = b.reaction[k];
