@@ -4,6 +4,8 @@
 #include <cmath>
 #include <stdexcept>
 #include <moorsph/fluid/box_geometry.hpp>
+#include <moorsph/io/mesh_sampling.hpp>
+
 
 namespace moorsph::io {
 namespace {
@@ -22,6 +24,44 @@ int latticeCells(double length, double spacing) {
 }
 
 int fluidCells(double length, double dx) { return static_cast<int>(std::floor(length / dx + 1e-9)); }
+
+/// Where water must not start: inside an obstacle mesh, or closer than `gap` to its
+/// surface (a particle there would be thrown off by the wall force). Cost: the
+/// particles within `gap` of a mesh's bounding box times its triangles.
+class MeshExclusion {
+ public:
+  void addObstacle(const TriangleMesh& mesh, double gap) {
+    meshes_.push_back(&mesh);
+    gap_ = gap;
+  }
+  template <int D>
+  bool inside(const fluid::Vec<D>& r) const {
+    if constexpr (D != 3) {
+      return false;
+    } else {
+      for (const TriangleMesh* m : meshes_) {
+        const Eigen::Vector3d lo = m->lower().array() - gap_, hi = m->upper().array() + gap_;
+        if ((r.array() < lo.array()).any() || (r.array() > hi.array()).any()) continue;
+        if (meshContains(*m, r) || distanceToMesh(*m, r) < gap_) return true;
+      }
+      return false;
+    }
+  }
+
+ private:
+  std::vector<const TriangleMesh*> meshes_;
+  double gap_ = 0.0;
+};
+
+/// Mesh particles as a D-dimensional surface (meshes are 3D only; the loader rejects them in 2D).
+template <int D>
+fluid::BoundaryParticles<D> meshParticles(const fluid::BoundaryParticles<3>& p) {
+  if constexpr (D == 3) {
+    return p;
+  } else {
+    throw std::invalid_argument("mesh geometry is 3D only");
+  }
+}
 
 template <int D>
 fluid::BoxFaces<D> boxFaces(const BoxObstacleConfig& b) {
@@ -59,6 +99,14 @@ fluid::FluidSetup<D> makeSetup(const SceneConfig& c) {
   for (const auto& w : c.water) grow(w.box);
   for (const auto& t : c.tanks) grow(t.box);
   for (const auto& b : c.boxes) grow(b.box);
+  for (const auto& g : c.meshes) {
+    BoxExtent e;
+    for (int k = 0; k < 3; ++k) {
+      e.lower[k] = g.mesh.lower()[k];
+      e.upper[k] = g.mesh.upper()[k];
+    }
+    grow(e);
+  }
   const double margin = 4.0 * s.h();
   s.domain.lower = lo - fluid::Vec<D>::Constant(margin);
   s.domain.upper = hi + fluid::Vec<D>::Constant(margin);
@@ -74,26 +122,11 @@ BuiltScene<D> buildScene(const SceneConfig& c) {
   scene.setup = makeSetup<D>(c);
   const fluid::TaitEos eos(c.rho0, c.sound_speed, c.method.gamma);
   const double g = c.hydrostatic_start ? -c.gravity[1] : 0.0;
-  for (const auto& w : c.water) {
-    fluid::FluidParticles<D> block;
-    fluid::fillBox<D>(block, toVec<D>(w.box.lower), toVec<D>(w.box.upper), c.dx, eos, g, w.box.upper[1]);
-    // Obstacle boxes are solid: water is not placed inside them (a particle half a
-    // spacing outside a face stays).
-    for (std::size_t i = 0; i < block.size(); ++i) {
-      bool solid = false;
-      for (const auto& b : c.boxes) {
-        bool in = true;
-        for (int k = 0; k < D; ++k)
-          in = in && block.r[i][k] > b.box.lower[k] - 0.25 * c.dx && block.r[i][k] < b.box.upper[k] + 0.25 * c.dx;
-        solid = solid || in;
-      }
-      if (!solid) scene.fluid.add(block.r[i], block.v[i], block.rho[i], block.m[i]);
-    }
-  }
-  if (scene.fluid.size() == 0) throw std::invalid_argument("the scene's water blocks hold no particle outside its boxes");
 
   const double spacing = c.spacing();
   std::vector<const BoxExtent*> extents;  // per surface, for the probes' tile size
+  std::vector<double> mesh_tiles;         // per surface: sqrt(area per particle) of meshes [m]
+  MeshExclusion near_mesh;
   for (const auto& t : c.tanks) {
     const fluid::BoxFaces<D> faces = t.lid ? fluid::allFaces<D>() : fluid::openTopTank<D>();
     scene.boundary.addSurface(fluid::sampleBoxSurface<D>(toVec<D>(t.box.lower), toVec<D>(t.box.upper), spacing, faces,
@@ -107,6 +140,34 @@ BuiltScene<D> buildScene(const SceneConfig& c) {
                               fluid::SurfaceInfo{b.name, b.track_reaction});
     extents.push_back(&b.box);
   }
+
+  for (const auto& m : c.meshes) {
+    const auto particles = sampleMeshSurface(m.mesh, spacing, m.inward ? fluid::NormalSide::Inward : fluid::NormalSide::Outward);
+    const auto index = scene.boundary.addSurface(meshParticles<D>(particles), fluid::SurfaceInfo{m.name, m.track_reaction});
+    extents.push_back(nullptr);
+    mesh_tiles.resize(index + 1, 0.0);
+    mesh_tiles[index] = std::sqrt(m.mesh.area() / static_cast<double>(particles.size()));
+    if (!m.inward) near_mesh.addObstacle(m.mesh, 0.45 * c.dx);
+  }
+
+  for (const auto& w : c.water) {
+    fluid::FluidParticles<D> block;
+    fluid::fillBox<D>(block, toVec<D>(w.box.lower), toVec<D>(w.box.upper), c.dx, eos, g, w.box.upper[1]);
+    // Obstacle boxes are solid: water is not placed inside them (a particle half a
+    // spacing outside a face stays).
+    for (std::size_t i = 0; i < block.size(); ++i) {
+      bool solid = false;
+      for (const auto& b : c.boxes) {
+        bool in = true;
+        for (int k = 0; k < D; ++k)
+          in = in && block.r[i][k] > b.box.lower[k] - 0.25 * c.dx && block.r[i][k] < b.box.upper[k] + 0.25 * c.dx;
+        solid = solid || in;
+      }
+      solid = solid || near_mesh.inside(block.r[i]);
+      if (!solid) scene.fluid.add(block.r[i], block.v[i], block.rho[i], block.m[i]);
+    }
+  }
+  if (scene.fluid.size() == 0) throw std::invalid_argument("the scene's water blocks hold no particle outside its boxes");
 
   for (const auto& gc : c.gauges) {
     fluid::WaveGaugeSpec<D> g;
@@ -130,14 +191,18 @@ BuiltScene<D> buildScene(const SceneConfig& c) {
     // Each boundary particle stands for a tile of the lattice steps along the face.
     int normal_axis = 0;
     p.normal.cwiseAbs().maxCoeff(&normal_axis);
-    const BoxExtent& box = *extents[p.surface];
-    double tile = 1.0;
-    for (int k = 0; k < D; ++k) {
-      if (k == normal_axis) continue;
-      const double edge = box.upper[k] - box.lower[k];
-      tile *= edge / latticeCells(edge, spacing);
+    if (extents[p.surface]) {
+      const BoxExtent& box = *extents[p.surface];
+      double tile = 1.0;
+      for (int k = 0; k < D; ++k) {
+        if (k == normal_axis) continue;
+        const double edge = box.upper[k] - box.lower[k];
+        tile *= edge / latticeCells(edge, spacing);
+      }
+      p.boundary_spacing = std::pow(tile, 1.0 / (D - 1));
+    } else {
+      p.boundary_spacing = mesh_tiles[p.surface];
     }
-    p.boundary_spacing = std::pow(tile, 1.0 / (D - 1));
     out.probe_names.push_back(pc.name);
     out.probes.push_back(p);
   }

@@ -1,6 +1,7 @@
 // Geometry, sensor and method sections of a scene file.
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include "scene_sections.hpp"
 
 namespace moorsph::io::detail {
@@ -37,7 +38,43 @@ bool inside(const BoxExtent& inner, const BoxExtent& outer, int dim) {
 std::string uniqueName(const SceneConfig& c, const std::string& name) {
   for (const auto& t : c.tanks) if (t.name == name) return "";
   for (const auto& b : c.boxes) if (b.name == name) return "";
+  for (const auto& m : c.meshes) if (m.name == name) return "";
   return name;
+}
+
+MeshConfig readMeshItem(MapReader& m, const SceneConfig& c) {
+  MeshConfig g;
+  g.name = m.text("name", "mesh" + std::to_string(c.meshes.size()));
+  g.file = m.requiredText("file");
+  const std::filesystem::path file(g.file);
+  g.path = file.is_absolute() ? g.file : (std::filesystem::path(c.file).parent_path() / file).string();
+  g.scale = m.positive("scale", 1.0, "factor from file units to metres");
+  g.translate = toTriple(m.vector("translate", 3, {0.0, 0.0, 0.0}));
+  const std::string normals = m.text("normals", "outward");
+  if (normals != "outward" && normals != "inward")
+    m.fail("normals", "expected 'outward' (an obstacle or body in the fluid) or 'inward' (a container), got '" + normals + "'");
+  g.inward = normals == "inward";
+  if (c.dim != 3) m.fail("file", "mesh geometry is 3D only (dim: 3)");
+  try {
+    g.mesh = readMesh(g.path);
+  } catch (const std::exception& e) {
+    m.fail("file", std::string("cannot use the mesh: ") + e.what());
+  }
+  for (auto& v : g.mesh.vertices) v = g.scale * v + Eigen::Vector3d(g.translate[0], g.translate[1], g.translate[2]);
+  if (std::abs(g.mesh.signedVolume()) < 1e-12 * std::pow(g.mesh.upper().x() - g.mesh.lower().x(), 3))
+    m.fail("file", "the mesh encloses no volume: it must be a closed surface");
+  const Eigen::Vector3d size = g.mesh.upper() - g.mesh.lower();
+  for (int k = 0; k < 3; ++k)
+    if (size[k] < 2.0 * c.dx * (1.0 - 1e-9)) {
+      char msg[240];
+      std::snprintf(msg, sizeof msg,
+                    "the mesh is %g m along %c, finer than the resolution allows (at least %g m at dx = %g m); "
+                    "refine resolution.dx or check 'scale'",
+                    size[k], kAxis[k], 2.0 * c.dx, c.dx);
+      m.fail("file", msg);
+    }
+  if (uniqueName(c, g.name).empty()) m.fail("name", "another surface is already named '" + g.name + "'");
+  return g;
 }
 
 }  // namespace
@@ -57,12 +94,12 @@ void readGeometry(MapReader& top, SceneConfig& c) {
     const std::string item_path = "geometry[" + std::to_string(i) + "]";
     const YAML::Node item = list[i];
     if (!item.IsMap() || item.size() != 1)
-      src.fail(item, item_path, "expected one of 'tank:', 'water:', 'box:' followed by its keys");
+      src.fail(item, item_path, "expected one of 'tank:', 'water:', 'box:', 'mesh:' followed by its keys");
     MapReader one(item, item_path, src);
-    one.rejectUnsupported({"sphere", "cylinder", "mesh", "stl", "obj", "body"},
-                          "only tank, water and box geometry exist so far");
+    one.rejectUnsupported({"sphere", "cylinder", "stl", "obj", "body"},
+                          "only tank, water, box and mesh geometry exist so far (a sphere or cylinder can be given as a mesh)");
     const std::string kind = item.begin()->first.as<std::string>();
-    for (const char* k : {"tank", "water", "box"})
+    for (const char* k : {"tank", "water", "box", "mesh"})
       if (kind != k) one.child(k);  // known here, for the misspelling hint
     if (kind == "tank") {
       MapReader m(one.child("tank"), item_path + ".tank", src);
@@ -99,13 +136,18 @@ void readGeometry(MapReader& top, SceneConfig& c) {
       if (uniqueName(c, b.name).empty()) m.fail("name", "another surface is already named '" + b.name + "'");
       m.finish();
       c.boxes.push_back(b);
+    } else if (kind == "mesh") {
+      MapReader m(one.child("mesh"), item_path + ".mesh", src);
+      MeshConfig g = readMeshItem(m, c);
+      m.finish();
+      c.meshes.push_back(std::move(g));
     }
     one.finish();
   }
   if (c.water.empty()) top.fail("geometry", "the scene has no water block (add '- water: {lower: [...], upper: [...]}')");
   const bool has_walls = std::find(c.effects.begin(), c.effects.end(), "walls") != c.effects.end();
-  if (!has_walls && (!c.tanks.empty() || !c.boxes.empty()))
-    top.fail("effects", "the scene has tanks or boxes but 'walls' is not in its effects");
+  if (!has_walls && (!c.tanks.empty() || !c.boxes.empty() || !c.meshes.empty()))
+    top.fail("effects", "the scene has tanks, boxes or meshes but 'walls' is not in its effects");
 }
 
 void readSensors(MapReader& top, SceneConfig& c) {
@@ -151,9 +193,13 @@ void readSensors(MapReader& top, SceneConfig& c) {
         names.push_back(b.name);
         if (b.name == p.surface) found = b.track_reaction = true;
       }
+      for (auto& g : c.meshes) {
+        names.push_back(g.name);
+        if (g.name == p.surface) found = g.track_reaction = true;
+      }
       if (!found) {
         const std::string guess = closestWord(p.surface, names);
-        m.fail("surface", "no tank or box is named '" + p.surface + "'" + (guess.empty() ? "" : " (did you mean '" + guess + "'?)"));
+        m.fail("surface", "no tank, box or mesh is named '" + p.surface + "'" + (guess.empty() ? "" : " (did you mean '" + guess + "'?)"));
       }
       m.finish();
       c.probes.push_back(p);

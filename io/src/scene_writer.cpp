@@ -2,6 +2,8 @@
 // records exactly what ran (and can be re-run with `moorsph run scene.resolved.yaml`).
 #include <yaml-cpp/yaml.h>
 
+#include <filesystem>
+
 #include <moorsph/io/scene_loader.hpp>
 
 namespace moorsph::io {
@@ -79,6 +81,15 @@ std::string resolvedSceneYaml(const SceneConfig& c) {
     e << YAML::Key << "name" << YAML::Value << b.name;
     extent(e, b.box, c.dim);
     e << YAML::Key << "open_faces" << YAML::Value << YAML::Flow << b.open_faces;
+    e << YAML::EndMap << YAML::EndMap;
+  }
+  for (const auto& g : c.meshes) {
+    e << YAML::BeginMap << YAML::Key << "mesh" << YAML::Value << YAML::BeginMap;
+    e << YAML::Key << "name" << YAML::Value << g.name;
+    e << YAML::Key << "file" << YAML::Value << std::filesystem::absolute(g.path).string();
+    e << YAML::Key << "scale" << YAML::Value << g.scale;
+    vec(e, "translate", g.translate, 3);
+    e << YAML::Key << "normals" << YAML::Value << (g.inward ? "inward" : "outward");
     e << YAML::EndMap << YAML::EndMap;
   }
   e << YAML::EndSeq;

@@ -27,6 +27,9 @@ namespace moorsph::io {
 
 fluid::BoundaryParticles<3> sampleMeshSurface(const TriangleMesh& mesh, double spacing, fluid::NormalSide side);
 
+/// Distance [m] from p to the nearest point of the mesh's surface.
+double distanceToMesh(const TriangleMesh& mesh, const Eigen::Vector3d& p);
+
 /// True if p lies inside the closed mesh (parity of the crossings of a ray).
 bool meshContains(const TriangleMesh& mesh, const Eigen::Vector3d& p);
 

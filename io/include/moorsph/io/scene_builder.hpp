@@ -28,8 +28,9 @@ BuiltScene<D> buildScene(const SceneConfig& config);
 template <int D>
 fluid::FluidSetup<D> makeSetup(const SceneConfig& config);
 
-/// Particle counts without building: fluid from the water lattices, boundary from
-/// the surface lattices (edges shared by faces counted once).
+/// Particle counts without building: fluid from the water lattices (an upper bound
+/// where boxes or meshes displace water), boundary from the tank and box lattices
+/// (exact for closed boxes; meshes are not counted).
 struct ParticleCounts {
   std::size_t fluid = 0;
   std::size_t boundary = 0;

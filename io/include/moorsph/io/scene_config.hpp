@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 #include <moorsph/fluid/method_parameters.hpp>
+#include <moorsph/io/triangle_mesh.hpp>
 
 namespace moorsph::io {
 
@@ -39,6 +40,18 @@ struct BoxObstacleConfig {
   std::vector<std::string> open_faces;  ///< faces left out: "-x", "+x", "-y", "+y", "-z", "+z"
   bool track_reaction = false;
   SourceLocation where;
+};
+
+/// A closed triangle mesh (STL/OBJ, 3D only) sampled into boundary particles.
+struct MeshConfig {
+  std::string name = "mesh";
+  std::string file;             ///< as written in the scene
+  std::string path;             ///< resolved against the scene file's folder
+  double scale = 1.0;           ///< file units -> m
+  Triple translate{0.0, 0.0, 0.0};  ///< [m], applied after scaling
+  bool inward = false;          ///< normals into the enclosed volume (a container)
+  bool track_reaction = false;
+  TriangleMesh mesh;            ///< scaled and translated [m]
 };
 
 /// A block of water on the fluid lattice.
@@ -97,6 +110,7 @@ struct SceneConfig {
 
   std::vector<TankConfig> tanks;
   std::vector<BoxObstacleConfig> boxes;
+  std::vector<MeshConfig> meshes;
   std::vector<WaterConfig> water;
   std::vector<GaugeConfig> gauges;
   std::vector<ProbeConfig> probes;
