@@ -131,3 +131,20 @@ output: {interval: 0.01, checkpoint_minutes: 0}
   for (std::string line; std::getline(csv, line);) ++rows;
   EXPECT_GT(rows, 5);  // header + the rows written before the failure
 }
+
+TEST(Checkpoint, WrittenAtTheWallTimeInterval) {
+  const std::string dir = freshDir("moorsph_interval");
+  const std::string scene = test::writeScene(dir + "/scene.yaml", test::kSmallDamBreak);
+  app::RunOptions o = options(scene, dir + "/run", 0.01);
+  o.sets = {"output.checkpoint_minutes=1e-6"};  // 60 us: about every step
+  ASSERT_EQ(app::runScene(o), app::kSuccess);
+  std::ifstream log(dir + "/run/log.txt");
+  int interval = 0, end = 0;
+  for (std::string line; std::getline(log, line);) {
+    if (line.find("(interval)") != std::string::npos) ++interval;
+    if (line.find("(end)") != std::string::npos) ++end;
+  }
+  EXPECT_GT(interval, 5);
+  EXPECT_EQ(end, 1);
+  EXPECT_EQ(io::readCheckpoint(dir + "/run/checkpoint.h5").reason, "end");
+}

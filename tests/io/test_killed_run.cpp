@@ -1,0 +1,53 @@
+// A run killed with SIGKILL (no chance to clean up) leaves series.h5, particles.h5 and
+// particles.xmf readable up to its last output (tests/io/check_killed.py, h5py).
+#include <gtest/gtest.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <thread>
+
+TEST(KilledRun, OutputReadableUpToTheLastOutput) {
+  const std::string source = std::getenv("MOORSPH_SOURCE_DIR") ? std::getenv("MOORSPH_SOURCE_DIR") : ".";
+  const std::string out = testing::TempDir() + "moorsph_killed";
+  std::filesystem::remove_all(out);
+  const pid_t child = fork();
+  ASSERT_GE(child, 0);
+  if (child == 0) {
+    // Frequent output so that the kill is likely to land during a write.
+    const std::string scene = source + "/cases/dam_break_2d.yaml";
+    freopen("/dev/null", "w", stdout);
+    execl(MOORSPH_BINARY, "moorsph", "run", scene.c_str(), "--out", out.c_str(), "--threads", "1", "--set",
+          "output.interval=0.002", "--set", "output.particles_interval=0.002", static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  // Wait until a few snapshots exist, then kill without warning.
+  const auto start = std::chrono::steady_clock::now();
+  while (std::chrono::steady_clock::now() - start < std::chrono::seconds(20)) {
+    std::ifstream xmf(out + "/particles.xmf");
+    const std::string text((std::istreambuf_iterator<char>(xmf)), std::istreambuf_iterator<char>());
+    std::size_t grids = 0;
+    for (std::size_t at = text.find("<Time "); at != std::string::npos; at = text.find("<Time ", at + 1)) ++grids;
+    if (grids >= 5) break;
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  std::this_thread::sleep_for(std::chrono::milliseconds(137));
+  kill(child, SIGKILL);
+  int status = 0;
+  waitpid(child, &status, 0);
+  ASSERT_TRUE(WIFSIGNALED(status)) << "the run ended before it was killed";
+
+  const std::string log = out + ".h5py.txt";
+  const int rc = std::system(("/usr/bin/python3 " + source + "/tests/io/check_killed.py " + out + " > " + log + " 2>&1").c_str());
+  std::ifstream in(log);
+  const std::string report((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const int code = WIFEXITED(rc) ? WEXITSTATUS(rc) : -1;
+  if (code == 77) GTEST_SKIP() << report;
+  EXPECT_EQ(code, 0) << report;
+  std::printf("%s", report.c_str());
+}
