@@ -9,7 +9,7 @@
 #include <moorsph/bodies/mooring_factory.hpp>
 #include <moorsph/coupling/co_simulation.hpp>
 
-#include "floating_box_scene.hpp"
+#include <moorsph/cases/floating_box.hpp>
 
 using namespace moorsph;
 
@@ -48,10 +48,10 @@ Eigen::Vector3d totalMomentum(const coupling::CoSimulation<2>& co, double body_m
 }  // namespace
 
 TEST(CoSimulation, MomentumChangeEqualsExternalImpulse) {
-  test_scenes::FloatingBox box;
+  cases::FloatingBox box;
   box.track_tank = true;
   box.density_ratio = 0.35;  // released high in the water: it rises and sloshes
-  auto scene = test_scenes::buildFloatingBox(box);
+  auto scene = cases::buildFloatingBox(box);
   scene.system->initialize();
   double fluid_mass = 0.0;
   for (double m : scene.fluid->fluid().m) fluid_mass += m;
@@ -74,8 +74,8 @@ TEST(CoSimulation, MomentumChangeEqualsExternalImpulse) {
 
 TEST(CoSimulation, RunsWithEachMooringModelByOneWord) {
   for (const std::string word : {"tension_only_spring", "cable_path", "elastic_catenary", "lumped_mass"}) {
-    test_scenes::FloatingBox box;
-    auto scene = test_scenes::buildFloatingBox(box);
+    cases::FloatingBox box;
+    auto scene = cases::buildFloatingBox(box);
     // A line from the box's bottom centre to an anchor on the floor below, slack
     // enough at rest for the catenary models, described once for all models.
     bodies::MooringLineParams line;

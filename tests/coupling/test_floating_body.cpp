@@ -12,10 +12,10 @@
 #include <moorsph/fluid/fluid_simulation.hpp>
 #include <moorsph/fluid/tank_scene.hpp>
 
-#include "floating_box_scene.hpp"
+#include <moorsph/cases/floating_box.hpp>
 
 using namespace moorsph;
-using test_scenes::FloatingBox;
+
 
 namespace {
 
@@ -49,9 +49,9 @@ class StepProbe final : public fluid::FluidEffect<2> {
 }  // namespace
 
 TEST(FloatingBody, BoxFloatsAtArchimedesDraughtAndCouplingHoldsPredictedWrench) {
-  test_scenes::FloatingBox box;
+  cases::FloatingBox box;
   box.fix_rotation = true;  // heave and surge only: Newton check below
-  auto scene = test_scenes::buildFloatingBox(box);
+  auto scene = cases::buildFloatingBox(box);
   auto& sim = *scene.fluid;
   auto& system = *scene.system;
   system.initialize();

@@ -1,6 +1,8 @@
 #pragma once
 // A 2D tank with a floating box placed at its Archimedes draught below the still
-// level (which the displaced area raises), shared by the coupling tests.
+// level (which the displaced area raises): the coupling tests and the light-body
+// sweep (cases/floating_box) use it. Header only: it needs bodies/, which a build
+// without MOORSPH_WITH_BODIES lacks.
 #include <cmath>
 #include <memory>
 #include <moorsph/bodies/multibody_system.hpp>
@@ -8,7 +10,7 @@
 #include <moorsph/fluid/fluid_simulation.hpp>
 #include <moorsph/fluid/tank_scene.hpp>
 
-namespace moorsph::test_scenes {
+namespace moorsph::cases {
 
 struct FloatingBox {
   double tank_length = 0.8, depth = 0.2, dx = 0.01, width = 0.2, height = 0.1, density_ratio = 0.5;
@@ -65,4 +67,4 @@ inline FloatingBoxScene buildFloatingBox(const FloatingBox& box) {
   return out;
 }
 
-}  // namespace moorsph::test_scenes
+}  // namespace moorsph::cases
