@@ -19,7 +19,9 @@ Metrics (window 0..6 s, or the run's end if earlier):
 import argparse
 import os
 
-import h5py
+# Read series.h5 of a run that is still writing it (HDF5 1.10 locks files by default).
+os.environ.setdefault("HDF5_USE_FILE_LOCKING", "FALSE")
+import h5py  # noqa: E402
 import matplotlib
 
 matplotlib.use("Agg")
@@ -133,7 +135,12 @@ def plot_heights(data, runs, path):
     plt.close(fig)
 
 
+def finished(info):
+    return info.get("error", "none") == "none" and info.get("status", "finished") == "finished"
+
+
 def plot_pressure(data, runs, path):
+    runs = [r for r in runs if finished(r[0])]  # runs that stopped early: heights plot and tables only
     fig, axes = plt.subplots(len(SENSORS), 1, figsize=(8, 10), sharex=True)
     for ax, name in zip(axes, SENSORS):
         ax.plot(data["time"], running_mean(data["time"], data[name], 0.010), "k-", lw=1.0,
@@ -156,6 +163,7 @@ def plot_pressure(data, runs, path):
 
 
 def plot_p1_zoom(data, runs, path):
+    runs = [r for r in runs if finished(r[0])]
     fig, ax = plt.subplots(figsize=(8, 4))
     ax.plot(data["time"], data["P1"], color="0.6", lw=0.6, label="experiment, raw")
     ax.plot(data["time"], running_mean(data["time"], data["P1"], 0.010), "k-", lw=1.2,

@@ -46,5 +46,5 @@ for config in $CONFIGS; do
     --threads "$THREADS" --out "$out" "${args[@]}" || echo "   ($name stopped early: see $out/run.txt)"
 done
 
-/usr/bin/python3 cases/spheric_test2/compare.py --data "$DATA" --plots docs/validation \
+/usr/bin/python3 cases/spheric_test2/compare.py --common-window --data "$DATA" --plots docs/validation \
   --table docs/validation/spheric-test2-table.md "${dirs[@]}"
