@@ -27,6 +27,7 @@ int checkDim(const io::SceneConfig& c) {
   const double rss0 = residentBytes();
   auto built = io::buildScene<D>(c);
   fluid::FluidSimulation<D> sim(built.scene.setup, built.scene.fluid, built.scene.boundary);
+  io::addSceneEffects(sim, c, built);
   const std::size_t nb = sim.walls() ? sim.walls()->particles().size() : 0;
   std::printf("scene %s: %dD '%s', valid\n", c.file.c_str(), D, c.name.c_str());
   std::printf("  particles: %zu fluid, %zu boundary\n", sim.fluid().size(), nb);

@@ -57,6 +57,7 @@ int runDim(const io::SceneConfig& config, const RunOptions& o, const std::string
                                               ": it belongs to another scene");
   }
   fluid::FluidSimulation<D> sim(built.scene.setup, particles, built.scene.boundary);
+  io::addSceneEffects(sim, config, built);
   if (restarting) sim.restoreClock(restored.time, static_cast<std::size_t>(restored.steps), restored.last_dt);
 
   log.line("moorsph run " + config.file + " -> " + fs::absolute(out).string());

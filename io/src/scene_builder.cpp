@@ -82,7 +82,10 @@ fluid::FluidSetup<D> makeSetup(const SceneConfig& c) {
   s.sound_speed = c.sound_speed;
   s.gravity = toVec<D>(c.gravity);
   s.method = c.method;
-  s.effects = c.effects;
+  // The wave makers are added by addSceneEffects, not built from the list.
+  s.effects.clear();
+  for (const auto& e : c.effects)
+    if (e != "piston" && e != "damping_zone" && e != "forcing_region") s.effects.push_back(e);
   if (c.domain_given) {
     s.domain.lower = toVec<D>(c.domain.lower);
     s.domain.upper = toVec<D>(c.domain.upper);
@@ -148,6 +151,26 @@ BuiltScene<D> buildScene(const SceneConfig& c) {
     mesh_tiles.resize(index + 1, 0.0);
     mesh_tiles[index] = std::sqrt(m.mesh.area() / static_cast<double>(particles.size()));
     if (!m.inward) near_mesh.addObstacle(m.mesh, 0.45 * c.dx);
+  }
+
+  if (c.piston.present) {
+    // The plate: the +x face of a box 2 spacings thick behind x, normals toward the water.
+    const auto& p = c.piston;
+    fluid::Vec<D> lo = fluid::Vec<D>::Zero(), hi = fluid::Vec<D>::Zero();
+    lo[0] = p.x - 2.0 * spacing;
+    hi[0] = p.x;
+    lo[1] = p.bottom;
+    hi[1] = p.top;
+    if constexpr (D == 3) {
+      lo[2] = p.z_lower;
+      hi[2] = p.z_upper;
+    }
+    fluid::BoxFaces<D> faces{};
+    faces[1] = true;
+    fluid::SurfaceInfo info{p.name, false, true, Eigen::Vector3d(p.x, 0.0, 0.0)};
+    out.piston_surface = scene.boundary.addSurface(
+        fluid::sampleBoxSurface<D>(lo, hi, spacing, faces, fluid::NormalSide::Outward), info);
+    extents.push_back(nullptr);
   }
 
   for (const auto& w : c.water) {

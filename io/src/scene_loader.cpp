@@ -12,7 +12,7 @@ namespace {
 using detail::MapReader;
 using detail::YamlSource;
 
-const std::vector<std::string> kUnsupportedEffects{"forcing_region", "piston", "damping_zone", "bodies"};
+const std::vector<std::string> kUnsupportedEffects{"bodies"};
 
 /// Apply one "key.path=value" to the tree. Sequence entries are addressed by index
 /// ("geometry[1]" or "geometry.1"); missing map keys are created.
@@ -135,9 +135,7 @@ SceneConfig readScene(const YAML::Node& root, const YamlSource& source) {
   c.file = source.file;
   if (!root.IsDefined() || root.IsNull()) throw SceneError(source.file, "", "the scene file is empty");
   MapReader top(root, "", source);
-  top.rejectUnsupported({"bodies", "cables", "moorings", "wave_makers", "wave_maker", "piston", "damping_zones",
-                         "forcing_regions"},
-                        "bodies, moorings and wave makers arrive with the coupling and wave-maker work");
+  top.rejectUnsupported({"bodies", "cables", "moorings"}, "bodies and moorings arrive with the coupling work");
   c.dim = top.integer("dim", 0);
   if (c.dim != 2 && c.dim != 3) {
     if (!top.has("dim")) top.fail("dim", "required key is missing (expected 2 or 3)");
@@ -166,10 +164,6 @@ SceneConfig readScene(const YAML::Node& root, const YamlSource& source) {
   readEffects(top, c);
   readDomain(top, c);
   detail::readGeometry(top, c);
-  detail::readSensors(top, c);
-  readOutput(top, c);
-  top.finish();
-
   // c_s must be at least 10x the largest expected flow speed (Mach <= 0.1, density
   // variations <= 1%): the water's free-fall speed over its own height.
   const double expected = c.expectedSpeed();
@@ -184,13 +178,19 @@ SceneConfig readScene(const YAML::Node& root, const YamlSource& source) {
     MapReader f(root["fluid"], "fluid", source);
     f.fail("sound_speed", msg);
   }
+  detail::readWaveMakers(top, c);
+  detail::readSensors(top, c);
+  readOutput(top, c);
+  top.finish();
+
   return c;
 }
 
 }  // namespace
 
 const std::vector<std::string>& knownEffects() {
-  static const std::vector<std::string> known{"pressure", "viscosity", "xsph", "density_diffusion", "gravity", "walls"};
+  static const std::vector<std::string> known{"pressure", "viscosity", "xsph",         "density_diffusion", "gravity",
+                                              "walls",    "piston",    "damping_zone", "forcing_region"};
   return known;
 }
 
@@ -204,6 +204,13 @@ double SceneConfig::waterHeight() const {
   }
   return any ? hi - lo : 0.0;
 }
+
+double SceneConfig::cflDt() const {
+  const double h = method.h_factor * dx;
+  return method.cfl * h / (sound_speed + 2.0 * method.viscosity_xi * mu / (h * rho0));
+}
+
+bool SceneConfig::hasEffect(const std::string& e) const { return std::find(effects.begin(), effects.end(), e) != effects.end(); }
 
 double SceneConfig::expectedSpeed() const {
   const double g = std::sqrt(gravity[0] * gravity[0] + gravity[1] * gravity[1] + gravity[2] * gravity[2]);

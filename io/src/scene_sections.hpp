@@ -8,6 +8,8 @@ namespace moorsph::io::detail {
 /// Reads `geometry`, `gauges` and `pressure_probes`; needs dim, dx and the boundary spacing.
 void readGeometry(MapReader& top, SceneConfig& config);
 void readSensors(MapReader& top, SceneConfig& config);
+/// Reads `piston`, `damping_zones`, `forcing_region`; needs geometry and the method.
+void readWaveMakers(MapReader& top, SceneConfig& config);
 /// Reads `method` on top of the reference preset.
 void readMethod(MapReader& top, SceneConfig& config);
 

@@ -93,6 +93,39 @@ std::string resolvedSceneYaml(const SceneConfig& c) {
     e << YAML::EndMap << YAML::EndMap;
   }
   e << YAML::EndSeq;
+  if (c.piston.present) {
+    const auto& p = c.piston;
+    e << YAML::Key << "piston" << YAML::Value << YAML::BeginMap;
+    e << YAML::Key << "name" << YAML::Value << p.name << YAML::Key << "x" << YAML::Value << p.x;
+    e << YAML::Key << "bottom" << YAML::Value << p.bottom << YAML::Key << "top" << YAML::Value << p.top;
+    if (c.dim == 3) e << YAML::Key << "z" << YAML::Value << YAML::Flow << YAML::BeginSeq << p.z_lower << p.z_upper << YAML::EndSeq;
+    e << YAML::Key << "signal" << YAML::Value << YAML::BeginMap << YAML::Key << "type" << YAML::Value << p.signal;
+    if (p.signal == "regular") {
+      e << YAML::Key << "wave_height" << YAML::Value << p.wave_height << YAML::Key << "period" << YAML::Value << p.period;
+      e << YAML::Key << "depth" << YAML::Value << p.depth << YAML::Key << "ramp_up" << YAML::Value << p.ramp_up;
+    } else {
+      e << YAML::Key << "file" << YAML::Value << std::filesystem::absolute(p.table).string();
+    }
+    e << YAML::EndMap << YAML::EndMap;
+  }
+  if (!c.damping_zones.empty()) {
+    e << YAML::Key << "damping_zones" << YAML::Value << YAML::BeginSeq;
+    for (const auto& z : c.damping_zones)
+      e << YAML::Flow << YAML::BeginMap << YAML::Key << "x_start" << YAML::Value << z.x_start << YAML::Key << "x_end"
+        << YAML::Value << z.x_end << YAML::Key << "k_max" << YAML::Value << z.k_max << YAML::EndMap;
+    e << YAML::EndSeq;
+  }
+  if (c.forcing.present) {
+    const auto& f = c.forcing;
+    e << YAML::Key << "forcing_region" << YAML::Value << YAML::BeginMap;
+    e << YAML::Key << "x_start" << YAML::Value << f.x_start << YAML::Key << "length" << YAML::Value << f.length;
+    e << YAML::Key << "floor" << YAML::Value << f.floor << YAML::Key << "bottom_gap" << YAML::Value << f.bottom_gap;
+    e << YAML::Key << "still_level" << YAML::Value << f.still_level << YAML::Key << "kappa" << YAML::Value << f.kappa;
+    e << YAML::Key << "wave" << YAML::Value << YAML::Flow << YAML::BeginMap << YAML::Key << "theory" << YAML::Value
+      << f.theory << YAML::Key << "amplitude" << YAML::Value << f.amplitude << YAML::Key << "period" << YAML::Value
+      << f.period << YAML::EndMap;
+    e << YAML::EndMap;
+  }
   if (!c.gauges.empty()) {
     e << YAML::Key << "gauges" << YAML::Value << YAML::BeginSeq;
     for (const auto& g : c.gauges) {

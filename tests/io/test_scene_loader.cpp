@@ -141,8 +141,8 @@ TEST(SceneLoader, FeaturesThatDoNotExistYetAreRejected) {
   EXPECT_NE(bodies.find("s.yaml:11:3: 'bodies': not supported yet"), std::string::npos) << bodies;
   const std::string sphere = errorOf(std::string(kBase) + "  - sphere: {centre: [0.2, 0.1], radius: 0.05}\n");
   EXPECT_NE(sphere.find("'geometry[2].sphere': not supported yet"), std::string::npos) << sphere;
-  const std::string piston = errorOf(std::string(kBase) + "effects: [pressure, gravity, walls, piston]\n");
-  EXPECT_NE(piston.find("'effects[3]': effect 'piston' is not supported yet"), std::string::npos) << piston;
+  const std::string coupled = errorOf(std::string(kBase) + "effects: [pressure, gravity, walls, bodies]\n");
+  EXPECT_NE(coupled.find("'effects[3]': effect 'bodies' is not supported yet"), std::string::npos) << coupled;
   const std::string typo = errorOf(std::string(kBase) + "effects: [pressure, gravty, walls]\n");
   EXPECT_NE(typo.find("did you mean 'gravity'"), std::string::npos) << typo;
 }

@@ -4,6 +4,7 @@
 // file order), and the specs of the scene's gauges and pressure probes.
 #include <string>
 #include <vector>
+#include <moorsph/fluid/fluid_simulation.hpp>
 #include <moorsph/fluid/pressure_probe.hpp>
 #include <moorsph/fluid/tank_scene.hpp>
 #include <moorsph/fluid/wave_gauge.hpp>
@@ -18,11 +19,18 @@ struct BuiltScene {
   std::vector<fluid::WaveGaugeSpec<D>> gauges;
   std::vector<std::string> probe_names;
   std::vector<fluid::PressureProbeSpec<D>> probes;
+  std::size_t piston_surface = 0;  ///< index of the piston's surface, if the scene has one
 };
 
 /// Builds the particles. `config.dim` must equal D.
 template <int D>
 BuiltScene<D> buildScene(const SceneConfig& config);
+
+/// Adds the effects FluidSimulation does not build from its effect list (the wave
+/// makers: piston, damping_zone, forcing_region), in that order. Call once, right after
+/// constructing the simulation from `built`.
+template <int D>
+void addSceneEffects(fluid::FluidSimulation<D>& sim, const SceneConfig& config, const BuiltScene<D>& built);
 
 /// The FluidSetup alone (no particles): what `moorsph check` reports before building.
 template <int D>

@@ -60,6 +60,40 @@ struct WaterConfig {
   SourceLocation where;
 };
 
+/// The piston wave maker (METHOD.md section 4b): a vertical plate at x (its face,
+/// water on its +x side) translated by X(t).
+struct PistonConfig {
+  bool present = false;
+  std::string name = "piston";
+  double x = 0.0;                 ///< rest position of the face [m]
+  double bottom = 0.0, top = 0.0; ///< vertical extent [m]
+  double z_lower = 0.0, z_upper = 0.0;  ///< across, 3D only [m]
+  std::string signal = "regular"; ///< "regular" or "table"
+  double wave_height = 0.0;       ///< H [m] (regular)
+  double period = 0.0;            ///< T [s] (regular)
+  double depth = 0.0;             ///< still depth d [m] (regular)
+  double ramp_up = 0.0;           ///< [s] (regular)
+  std::string table;              ///< CSV t [s], X [m] (table), resolved path
+  std::vector<double> table_t, table_x;
+};
+
+struct DampingZoneConfig {
+  double x_start = 0.0, x_end = 0.0;  ///< [m]
+  double k_max = 0.0;                 ///< [1/s]
+};
+
+/// The forcing region wave maker (METHOD.md section 4a).
+struct ForcingRegionConfig {
+  bool present = false;
+  double x_start = 0.0, length = 0.0;  ///< [m]
+  double floor = 0.0;                  ///< y of the floor [m]
+  double bottom_gap = 0.0;             ///< [m]
+  double still_level = 0.0;            ///< y of the still surface [m]
+  double kappa = 7.0;
+  std::string theory = "airy";         ///< "airy" or "stokes2"
+  double amplitude = 0.0, period = 0.0;  ///< [m], [s]
+};
+
 struct GaugeConfig {
   std::string name;
   double x = 0.0;       ///< [m]
@@ -112,6 +146,9 @@ struct SceneConfig {
   std::vector<BoxObstacleConfig> boxes;
   std::vector<MeshConfig> meshes;
   std::vector<WaterConfig> water;
+  PistonConfig piston;
+  std::vector<DampingZoneConfig> damping_zones;
+  ForcingRegionConfig forcing;
   std::vector<GaugeConfig> gauges;
   std::vector<ProbeConfig> probes;
   OutputConfig output;
@@ -121,6 +158,9 @@ struct SceneConfig {
   double waterHeight() const;
   /// The speed the scene's water may reach, sqrt(2 g H) [m/s].
   double expectedSpeed() const;
+  /// The CFL time step the fluid will take at most [s].
+  double cflDt() const;
+  bool hasEffect(const std::string& e) const;
 };
 
 }  // namespace moorsph::io
