@@ -148,3 +148,28 @@ TEST(Checkpoint, WrittenAtTheWallTimeInterval) {
   EXPECT_EQ(end, 1);
   EXPECT_EQ(io::readCheckpoint(dir + "/run/checkpoint.h5").reason, "end");
 }
+
+TEST(Checkpoint, RestartWithAMovingPistonIsBitIdentical) {
+  const std::string dir = freshDir("moorsph_restart_piston");
+  const std::string scene = test::writeScene(dir + "/scene.yaml", R"(dim: 2
+end_time: 0.3
+resolution: {dx: 0.02}
+effects: [pressure, viscosity, xsph, gravity, walls, piston, damping_zone]
+geometry:
+  - tank: {lower: [0, 0], upper: [1.2, 0.4]}
+  - water: {lower: [0.1, 0], upper: [1.2, 0.2]}
+piston: {x: 0.1, bottom: 0, top: 0.3, signal: {type: regular, wave_height: 0.04, period: 0.8, ramp_up: 0.1}}
+damping_zones: [{x_start: 0.8, x_end: 1.2, k_max: 10}]
+output: {interval: 0.05, checkpoint_minutes: 0}
+)");
+  ASSERT_EQ(app::runScene(options(scene, dir + "/straight", 0.3)), app::kSuccess);
+  ASSERT_EQ(app::runScene(options(scene, dir + "/first", 0.15)), app::kSuccess);
+  app::RunOptions again = options(scene, dir + "/second", 0.3);
+  again.restart = dir + "/first/checkpoint.h5";
+  ASSERT_EQ(app::runScene(again), app::kSuccess);
+  const auto a = io::readCheckpoint(dir + "/straight/checkpoint.h5");
+  const auto b = io::readCheckpoint(dir + "/second/checkpoint.h5");
+  ASSERT_EQ(a.size(), b.size());
+  EXPECT_EQ(a.steps, b.steps);
+  EXPECT_EQ(countDifferences(a, b), 0u);
+}
