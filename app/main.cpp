@@ -83,7 +83,8 @@ int main(int argc, char** argv) {
   run_cmd->add_option("--out", run.out, "run directory (default moorsph-output/<scene name>; for a restart, <checkpoint dir>.restart)");
   run_cmd->add_option("--threads", run.threads, "OpenMP threads (0: OMP_NUM_THREADS or all cores)")->check(CLI::NonNegativeNumber);
   run_cmd->add_option("--end", run.end, "simulated end time [s], overriding end_time")->check(CLI::PositiveNumber);
-  run_cmd->add_option("--set", run.sets, "override a scene key: key.path=value (repeatable), e.g. --set resolution.dx=0.01");
+  run_cmd->add_option("--set", run.sets, "override a scene key: key.path=value (repeatable), e.g. --set resolution.dx=0.01")
+      ->allow_extra_args(false);  // one value per --set, so a scene path after it stays positional
   run_cmd->add_option("--restart", run.restart, "continue from a checkpoint (bit-identical at the same thread count)")
       ->check(CLI::ExistingFile);
 
@@ -92,7 +93,7 @@ int main(int argc, char** argv) {
   int check_threads = 0;
   CLI::App* check_cmd = app.add_subcommand("check", "validate a scene and estimate particles, steps, wall time and memory");
   check_cmd->add_option("scene", check_scene, "scene file (YAML)")->required()->check(CLI::ExistingFile);
-  check_cmd->add_option("--set", check_sets, "override a scene key: key.path=value (repeatable)");
+  check_cmd->add_option("--set", check_sets, "override a scene key: key.path=value (repeatable)")->allow_extra_args(false);
   check_cmd->add_option("--threads", check_threads, "OpenMP threads for the timed sample");
 
   std::string export_dir;

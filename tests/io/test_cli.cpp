@@ -1,0 +1,72 @@
+// The moorsph command as a user runs it: check's report, exit codes, --set before the
+// scene path, export, and the progress line's contents.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+#include "run/progress.hpp"
+
+namespace {
+
+struct Result {
+  int code = -1;
+  std::string output;
+};
+
+Result run(const std::string& arguments) {
+  Result r;
+  std::FILE* pipe = popen((std::string(MOORSPH_BINARY) + " " + arguments + " 2>&1").c_str(), "r");
+  char buffer[512];
+  while (pipe && std::fgets(buffer, sizeof buffer, pipe)) r.output += buffer;
+  const int status = pipe ? pclose(pipe) : -1;
+  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return r;
+}
+
+std::string source() { return std::getenv("MOORSPH_SOURCE_DIR") ? std::getenv("MOORSPH_SOURCE_DIR") : "."; }
+
+}  // namespace
+
+TEST(Cli, CheckReportsCountsStepsAndCosts) {
+  const Result r = run("check " + source() + "/cases/dam_break_2d.yaml --threads 1 --set resolution.dx=0.01");
+  ASSERT_EQ(r.code, 0) << r.output;
+  for (const char* expected : {"particles: 200 fluid, 280 boundary", "dx = 0.01 m", "h = 0.012 m", "c_s = 28 m/s",
+                               "dt <= 2.1428e-04 s", "at least 4667 steps", "estimated wall time", "memory:",
+                               "effects: pressure viscosity xsph gravity walls"})
+    EXPECT_NE(r.output.find(expected), std::string::npos) << expected << "\n" << r.output;
+}
+
+TEST(Cli, ExitCodes) {
+  const std::string dir = testing::TempDir() + "moorsph_cli";
+  std::filesystem::remove_all(dir);
+  // --set before the scene path, then a value out of range: bad input, nothing run.
+  Result r = run("run --set resolution.dx=-1 " + source() + "/cases/dam_break_2d.yaml --out " + dir);
+  EXPECT_EQ(r.code, 2) << r.output;
+  EXPECT_NE(r.output.find("--set resolution.dx: 'resolution.dx': expected a particle spacing > 0 [m]"), std::string::npos)
+      << r.output;
+  EXPECT_FALSE(std::filesystem::exists(dir + "/series.h5"));
+  EXPECT_EQ(run("run").code, 1);                        // no scene
+  EXPECT_EQ(run("frobnicate").code, 1);                 // no such subcommand
+  EXPECT_EQ(run("export " + dir + " --csv").code, 1);   // no such directory (argument check)
+  std::filesystem::create_directories(dir);
+  EXPECT_EQ(run("export " + dir + " --csv").code, 2);   // not a run directory
+  // A short run, then export.
+  r = run("run " + source() + "/cases/dam_break_2d.yaml --end 0.02 --threads 1 --out " + dir +
+          " --set resolution.dx=0.01 --set output.particles_interval=0");
+  ASSERT_EQ(r.code, 0) << r.output;
+  EXPECT_NE(r.output.find("output: "), std::string::npos) << r.output;
+  r = run("export " + dir + " --csv");
+  EXPECT_EQ(r.code, 0) << r.output;
+  EXPECT_TRUE(std::filesystem::exists(dir + "/csv/gauges.G_mid.csv"));
+}
+
+TEST(Cli, ProgressLineSaysWhereTheRunIs) {
+  moorsph::app::RunLog log(testing::TempDir() + "progress_log.txt");
+  moorsph::app::Progress progress(log, 0.0, 2.0);
+  const std::string line = progress.describe(0.5, 1000, 1e-4);
+  for (const char* expected : {"t = 0.5000 / 2 s", "( 25%)", "steps/s", "dt = 1.00e-04 s", "real-time factor", "ETA"})
+    EXPECT_NE(line.find(expected), std::string::npos) << expected << " in " << line;
+}
