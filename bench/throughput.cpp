@@ -34,6 +34,7 @@ int run(double target_particles, int steps) {
   for (int n = 0; n < 3; ++n) sim.step();  // warm-up: first list build, page faults
   const auto interactions0 = sim.totalInteractions();
   const auto phases0 = sim.phaseTimers().seconds();
+  const auto rebuilds0 = sim.neighbours().rebuildCount();
   const auto t0 = std::chrono::steady_clock::now();
   for (int n = 0; n < steps; ++n) sim.step();
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -47,7 +48,8 @@ int run(double target_particles, int steps) {
               "bytes_per_particle=%.0f threads=%d\n",
               D, n, sim.walls()->particles().size(), spec.dx, interactions / (2.0 * steps * n), steps, wall,
               n * steps / wall, interactions / wall, 1e9 * wall / (n * steps), rss_bytes / n, omp_get_max_threads());
-  std::printf("   phases:");
+  std::printf("   list rebuilds: %zu in %d steps;", sim.neighbours().rebuildCount() - rebuilds0, steps);
+  std::printf(" phases:");
   const auto& names = sim.phaseTimers().names();
   const auto& secs = sim.phaseTimers().seconds();
   for (std::size_t k = 0; k < names.size(); ++k) std::printf(" %s=%.1f%%", names[k].c_str(), 100.0 * (secs[k] - phases0[k]) / wall);

@@ -1,5 +1,7 @@
 #include <moorsph/fluid/neighbour_search.hpp>
 
+#include <omp.h>
+
 #include <algorithm>
 
 namespace moorsph::fluid {
@@ -66,26 +68,39 @@ void NeighbourSearch<D>::indexBoundary(const BoundaryParticles<D>& boundary) {
   for (std::size_t k = 0; k < n; ++k) boundary_sorted_[counts_[cell_of_[k]]++] = static_cast<std::uint32_t>(k);
 }
 
-// Two passes (count, then fill) so the list is one compact array without
-// per-thread buffers. `candidates(owner, visit)` calls visit(j) for every j within
-// the list radius.
+// One pass: each thread fills its own buffer for a contiguous block of owners (the
+// particles are sorted by cell, so blocks are balanced), then the blocks are copied
+// into the compact list at their offsets. The buffers persist between rebuilds, so a
+// rebuild allocates only when a list outgrows its capacity. `candidates(owner, visit)`
+// calls visit(j) for every j within the list radius.
 template <int D>
 template <class Candidates>
 void NeighbourSearch<D>::buildList(std::size_t owners, NeighbourList& list, Candidates&& candidates) {
   list.begin.resize(owners + 1);
   list.begin[0] = 0;
-#pragma omp parallel for schedule(dynamic, 256)
-  for (std::size_t i = 0; i < owners; ++i) {
-    std::uint64_t count = 0;
-    candidates(i, [&](std::uint32_t) { ++count; });
-    list.begin[i + 1] = count;
-  }
-  for (std::size_t i = 0; i < owners; ++i) list.begin[i + 1] += list.begin[i];
-  list.index.resize(list.begin[owners]);
-#pragma omp parallel for schedule(dynamic, 256)
-  for (std::size_t i = 0; i < owners; ++i) {
-    std::uint64_t at = list.begin[i];
-    candidates(i, [&](std::uint32_t j) { list.index[at++] = j; });
+  thread_buffers_.resize(static_cast<std::size_t>(omp_get_max_threads()));
+  thread_offsets_.resize(thread_buffers_.size() + 1);
+#pragma omp parallel
+  {
+    const std::size_t t = static_cast<std::size_t>(omp_get_thread_num());
+    const std::size_t nt = static_cast<std::size_t>(omp_get_num_threads());
+    const std::size_t first = owners * t / nt, last = owners * (t + 1) / nt;
+    std::vector<std::uint32_t>& local = thread_buffers_[t];
+    local.clear();
+    for (std::size_t i = first; i < last; ++i) {
+      candidates(i, [&](std::uint32_t j) { local.push_back(j); });
+      list.begin[i + 1] = local.size();  // cumulative within the block for now
+    }
+#pragma omp barrier
+#pragma omp single
+    {
+      thread_offsets_[0] = 0;
+      for (std::size_t k = 0; k < nt; ++k) thread_offsets_[k + 1] = thread_offsets_[k] + thread_buffers_[k].size();
+      list.index.resize(thread_offsets_[nt]);
+    }
+    const std::uint64_t offset = thread_offsets_[t];
+    std::copy(local.begin(), local.end(), list.index.begin() + static_cast<std::ptrdiff_t>(offset));
+    for (std::size_t i = first; i < last; ++i) list.begin[i + 1] += offset;
   }
 }
 

@@ -70,6 +70,8 @@ class NeighbourSearch {
   std::vector<Vec<D>> boundary_at_build_;
   NeighbourList fluid_fluid_, fluid_boundary_, boundary_fluid_;
   std::vector<std::uint32_t> tracked_index_;
+  std::vector<std::vector<std::uint32_t>> thread_buffers_;  // per-thread list blocks (buildList)
+  std::vector<std::uint64_t> thread_offsets_;
   std::size_t rebuild_count_ = 0;
 };
 
