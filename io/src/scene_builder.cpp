@@ -5,6 +5,7 @@
 #include <stdexcept>
 #include <moorsph/fluid/box_geometry.hpp>
 #include <moorsph/io/mesh_sampling.hpp>
+#include <moorsph/io/primitive_shapes.hpp>
 
 
 namespace moorsph::io {
@@ -102,6 +103,7 @@ fluid::FluidSetup<D> makeSetup(const SceneConfig& c) {
   for (const auto& w : c.water) grow(w.box);
   for (const auto& t : c.tanks) grow(t.box);
   for (const auto& b : c.boxes) grow(b.box);
+  for (const auto& k : c.circles) grow(BoxExtent{{k.x - k.radius, k.y - k.radius, 0.0}, {k.x + k.radius, k.y + k.radius, 0.0}});
   for (const auto& g : c.meshes) {
     BoxExtent e;
     for (int k = 0; k < 3; ++k) {
@@ -153,6 +155,17 @@ BuiltScene<D> buildScene(const SceneConfig& c) {
     if (!m.inward) near_mesh.addObstacle(m.mesh, 0.45 * c.dx);
   }
 
+  for (const auto& k : c.circles) {
+    if constexpr (D == 2) {
+      const auto index = scene.boundary.addSurface(
+          sampleCircle(Eigen::Vector2d(k.x, k.y), k.radius, spacing, fluid::NormalSide::Outward),
+          fluid::SurfaceInfo{k.name, k.track_reaction});
+      extents.push_back(nullptr);
+      mesh_tiles.resize(index + 1, 0.0);
+      mesh_tiles[index] = 2.0 * M_PI * k.radius / std::ceil(2.0 * M_PI * k.radius / spacing - 1e-9);
+    }
+  }
+
   if (c.piston.present) {
     // The plate: the +x face of a box 2 spacings thick behind x, normals toward the water.
     const auto& p = c.piston;
@@ -187,6 +200,8 @@ BuiltScene<D> buildScene(const SceneConfig& c) {
         solid = solid || in;
       }
       solid = solid || near_mesh.inside(block.r[i]);
+      for (const auto& k : c.circles)  // 2D obstacles: inside, or within 0.45 dx of the circle
+        solid = solid || std::hypot(block.r[i][0] - k.x, block.r[i][1] - k.y) < k.radius + 0.45 * c.dx;
       if (!solid) scene.fluid.add(block.r[i], block.v[i], block.rho[i], block.m[i]);
     }
   }

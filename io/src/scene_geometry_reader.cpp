@@ -2,6 +2,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <moorsph/io/primitive_shapes.hpp>
 #include "scene_sections.hpp"
 
 namespace moorsph::io::detail {
@@ -39,7 +40,51 @@ std::string uniqueName(const SceneConfig& c, const std::string& name) {
   for (const auto& t : c.tanks) if (t.name == name) return "";
   for (const auto& b : c.boxes) if (b.name == name) return "";
   for (const auto& m : c.meshes) if (m.name == name) return "";
+  for (const auto& k : c.circles) if (k.name == name) return "";
   return name;
+}
+
+/// `sphere` (3D) or `cylinder` (3D: a mesh; 2D: a circle).
+void readPrimitive(MapReader& m, const std::string& kind, SceneConfig& c) {
+  const std::string name = m.text("name", kind + std::to_string(c.meshes.size() + c.circles.size()));
+  if (uniqueName(c, name).empty()) m.fail("name", "another surface is already named '" + name + "'");
+  const auto centre = m.vector("centre", c.dim);
+  const double radius = m.positive("radius", 0.0, "radius [m]");
+  if (radius < c.dx * (1.0 - 1e-9)) {
+    char msg[200];
+    std::snprintf(msg, sizeof msg, "the %s's radius %g m is finer than the resolution allows (at least dx = %g m)",
+                  kind.c_str(), radius, c.dx);
+    m.fail("radius", msg);
+  }
+  if (c.dim == 2) {
+    if (kind == "sphere") m.fail("radius", "a sphere is 3D only; in 2D use a cylinder (a circle in the x-y plane)");
+    CircleConfig k;
+    k.name = name;
+    k.x = centre[0];
+    k.y = centre[1];
+    k.radius = radius;
+    m.finish();
+    c.circles.push_back(k);
+    return;
+  }
+  MeshConfig g;
+  g.name = name;
+  g.shape = kind;
+  g.centre = toTriple(centre);
+  g.radius = radius;
+  const Eigen::Vector3d at(centre[0], centre[1], centre[2]);
+  if (kind == "sphere") {
+    g.mesh = makeSphereMesh(at, radius, 0.5 * c.spacing());
+  } else {
+    g.length = m.positive("length", 0.0, "length along the axis [m]");
+    if (g.length < 2.0 * c.dx * (1.0 - 1e-9)) m.fail("length", "expected a length of at least 2 dx [m]");
+    const std::string axis = m.text("axis", "z");
+    if (axis != "x" && axis != "y" && axis != "z") m.fail("axis", "expected x, y or z, got '" + axis + "'");
+    g.axis = axis[0] - 'x';
+    g.mesh = makeCylinderMesh(at, radius, g.length, g.axis, 0.5 * c.spacing());
+  }
+  m.finish();
+  c.meshes.push_back(std::move(g));
 }
 
 MeshConfig readMeshItem(MapReader& m, const SceneConfig& c) {
@@ -94,12 +139,11 @@ void readGeometry(MapReader& top, SceneConfig& c) {
     const std::string item_path = "geometry[" + std::to_string(i) + "]";
     const YAML::Node item = list[i];
     if (!item.IsMap() || item.size() != 1)
-      src.fail(item, item_path, "expected one of 'tank:', 'water:', 'box:', 'mesh:' followed by its keys");
+      src.fail(item, item_path, "expected one of 'tank:', 'water:', 'box:', 'mesh:', 'sphere:', 'cylinder:' followed by its keys");
     MapReader one(item, item_path, src);
-    one.rejectUnsupported({"sphere", "cylinder", "stl", "obj", "body"},
-                          "only tank, water, box and mesh geometry exist so far (a sphere or cylinder can be given as a mesh)");
+    one.rejectUnsupported({"stl", "obj", "body"}, "geometry items are tank, water, box, mesh, sphere and cylinder");
     const std::string kind = item.begin()->first.as<std::string>();
-    for (const char* k : {"tank", "water", "box", "mesh"})
+    for (const char* k : {"tank", "water", "box", "mesh", "sphere", "cylinder"})
       if (kind != k) one.child(k);  // known here, for the misspelling hint
     if (kind == "tank") {
       MapReader m(one.child("tank"), item_path + ".tank", src);
@@ -141,12 +185,15 @@ void readGeometry(MapReader& top, SceneConfig& c) {
       MeshConfig g = readMeshItem(m, c);
       m.finish();
       c.meshes.push_back(std::move(g));
+    } else if (kind == "sphere" || kind == "cylinder") {
+      MapReader m(one.child(kind), item_path + "." + kind, src);
+      readPrimitive(m, kind, c);
     }
     one.finish();
   }
   if (c.water.empty()) top.fail("geometry", "the scene has no water block (add '- water: {lower: [...], upper: [...]}')");
   const bool has_walls = std::find(c.effects.begin(), c.effects.end(), "walls") != c.effects.end();
-  if (!has_walls && (!c.tanks.empty() || !c.boxes.empty() || !c.meshes.empty()))
+  if (!has_walls && (!c.tanks.empty() || !c.boxes.empty() || !c.meshes.empty() || !c.circles.empty()))
     top.fail("effects", "the scene has tanks, boxes or meshes but 'walls' is not in its effects");
 }
 
@@ -197,9 +244,13 @@ void readSensors(MapReader& top, SceneConfig& c) {
         names.push_back(g.name);
         if (g.name == p.surface) found = g.track_reaction = true;
       }
+      for (auto& k : c.circles) {
+        names.push_back(k.name);
+        if (k.name == p.surface) found = k.track_reaction = true;
+      }
       if (!found) {
         const std::string guess = closestWord(p.surface, names);
-        m.fail("surface", "no tank, box or mesh is named '" + p.surface + "'" + (guess.empty() ? "" : " (did you mean '" + guess + "'?)"));
+        m.fail("surface", "no tank, box, mesh, sphere or cylinder is named '" + p.surface + "'" + (guess.empty() ? "" : " (did you mean '" + guess + "'?)"));
       }
       m.finish();
       c.probes.push_back(p);

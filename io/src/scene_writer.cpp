@@ -84,6 +84,18 @@ std::string resolvedSceneYaml(const SceneConfig& c) {
     e << YAML::EndMap << YAML::EndMap;
   }
   for (const auto& g : c.meshes) {
+    if (g.shape != "file") {
+      e << YAML::BeginMap << YAML::Key << g.shape << YAML::Value << YAML::BeginMap;
+      e << YAML::Key << "name" << YAML::Value << g.name;
+      vec(e, "centre", g.centre, 3);
+      e << YAML::Key << "radius" << YAML::Value << g.radius;
+      if (g.shape == "cylinder") {
+        e << YAML::Key << "length" << YAML::Value << g.length;
+        e << YAML::Key << "axis" << YAML::Value << std::string(1, static_cast<char>('x' + g.axis));
+      }
+      e << YAML::EndMap << YAML::EndMap;
+      continue;
+    }
     e << YAML::BeginMap << YAML::Key << "mesh" << YAML::Value << YAML::BeginMap;
     e << YAML::Key << "name" << YAML::Value << g.name;
     e << YAML::Key << "file" << YAML::Value << std::filesystem::absolute(g.path).string();
@@ -91,6 +103,12 @@ std::string resolvedSceneYaml(const SceneConfig& c) {
     vec(e, "translate", g.translate, 3);
     e << YAML::Key << "normals" << YAML::Value << (g.inward ? "inward" : "outward");
     e << YAML::EndMap << YAML::EndMap;
+  }
+  for (const auto& k : c.circles) {
+    e << YAML::BeginMap << YAML::Key << "cylinder" << YAML::Value << YAML::BeginMap;
+    e << YAML::Key << "name" << YAML::Value << k.name;
+    vec(e, "centre", Triple{k.x, k.y, 0.0}, 2);
+    e << YAML::Key << "radius" << YAML::Value << k.radius << YAML::EndMap << YAML::EndMap;
   }
   e << YAML::EndSeq;
   if (c.piston.present) {

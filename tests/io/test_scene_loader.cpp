@@ -139,8 +139,8 @@ TEST(SceneLoader, OutOfRangeValues) {
 TEST(SceneLoader, FeaturesThatDoNotExistYetAreRejected) {
   const std::string bodies = errorOf(std::string(kBase) + "bodies:\n  - {name: buoy}\n");
   EXPECT_NE(bodies.find("s.yaml:11:3: 'bodies': not supported yet"), std::string::npos) << bodies;
-  const std::string sphere = errorOf(std::string(kBase) + "  - sphere: {centre: [0.2, 0.1], radius: 0.05}\n");
-  EXPECT_NE(sphere.find("'geometry[2].sphere': not supported yet"), std::string::npos) << sphere;
+  const std::string stl = errorOf(std::string(kBase) + "  - stl: {file: a.stl}\n");
+  EXPECT_NE(stl.find("'geometry[2].stl': not supported yet"), std::string::npos) << stl;
   const std::string coupled = errorOf(std::string(kBase) + "effects: [pressure, gravity, walls, bodies]\n");
   EXPECT_NE(coupled.find("'effects[3]': effect 'bodies' is not supported yet"), std::string::npos) << coupled;
   const std::string typo = errorOf(std::string(kBase) + "effects: [pressure, gravty, walls]\n");
@@ -212,5 +212,63 @@ geometry:
   EXPECT_NE(tiny.find("the mesh is 0.01 m along x, finer than the resolution allows"), std::string::npos) << tiny;
   const std::string side = errorOf(base3 + "  - mesh: {file: " + sourceDir() + "/cases/meshes/cylinder.obj, normals: out}\n");
   EXPECT_NE(side.find("expected 'outward'"), std::string::npos) << side;
-  EXPECT_NE(errorOf(base3 + "  - sphere: {radius: 0.1}\n").find("not supported yet"), std::string::npos);
+  EXPECT_NE(errorOf(base3 + "  - sphere: {radius: 0.1}\n").find("'geometry[2].sphere.centre': required key is missing"),
+            std::string::npos);
+}
+
+TEST(SceneLoader, SpheresAndCylinders) {
+  // 2D: a cylinder is a circle of particles with radial normals; water keeps out of it.
+  const std::string circle = std::string(kBase) +
+                             "  - cylinder: {name: pile, centre: [0.05, 0.1], radius: 0.03}\n"
+                             "pressure_probes:\n  - {name: P, surface: pile, point: [0.02, 0.1], normal: [-1, 0]}\n";
+  const auto c2 = io::loadSceneText(circle, "c.yaml");
+  ASSERT_EQ(c2.circles.size(), 1u);
+  const auto b2 = io::buildScene<2>(c2);
+  ASSERT_EQ(b2.scene.boundary.surfaces.size(), 2u);
+  EXPECT_TRUE(b2.scene.boundary.surfaces[1].track_reaction);
+  const auto& bp = b2.scene.boundary.particles;
+  std::size_t on_circle = 0;
+  for (std::size_t k = 0; k < bp.size(); ++k) {
+    if (bp.surface[k] != 1) continue;
+    ++on_circle;
+    const Eigen::Vector2d radial = (bp.r[k] - Eigen::Vector2d(0.05, 0.1)) / 0.03;
+    EXPECT_NEAR(radial.norm(), 1.0, 1e-12);
+    EXPECT_NEAR(bp.normals[bp.normal_begin[k]].dot(radial), 1.0, 1e-12);
+  }
+  EXPECT_EQ(on_circle, 19u);  // ceil(2 pi 0.03 / 0.01)
+  for (const auto& r : b2.scene.fluid.r) EXPECT_GE((r - Eigen::Vector2d(0.05, 0.1)).norm(), 0.03 + 0.45 * 0.01);
+  EXPECT_LT(b2.scene.fluid.size(), 200u);
+  EXPECT_NEAR(b2.probes[0].boundary_spacing, 2 * M_PI * 0.03 / 19, 1e-12);
+  EXPECT_EQ(io::resolvedSceneYaml(io::loadSceneText(io::resolvedSceneYaml(c2), "r.yaml")), io::resolvedSceneYaml(c2));
+
+  // 3D: a sphere and a cylinder along x become meshes; water keeps out of them.
+  const std::string solids = R"(dim: 3
+end_time: 0.1
+resolution: {dx: 0.01}
+fluid: {sound_speed: 25}
+geometry:
+  - tank: {lower: [0, 0, 0], upper: [0.4, 0.3, 0.2]}
+  - water: {lower: [0, 0, 0], upper: [0.4, 0.2, 0.2]}
+  - sphere: {name: ball, centre: [0.1, 0.1, 0.1], radius: 0.05}
+  - cylinder: {name: bar, centre: [0.3, 0.1, 0.1], radius: 0.03, length: 0.1, axis: x}
+)";
+  const auto c3 = io::loadSceneText(solids, "s3.yaml");
+  ASSERT_EQ(c3.meshes.size(), 2u);
+  EXPECT_NEAR(c3.meshes[0].mesh.signedVolume(), 4.0 / 3.0 * M_PI * 0.05 * 0.05 * 0.05, 2e-6);
+  EXPECT_NEAR(c3.meshes[1].mesh.signedVolume(), M_PI * 0.03 * 0.03 * 0.1, 2e-6);
+  const auto b3 = io::buildScene<3>(c3);
+  for (const auto& r : b3.scene.fluid.r) {
+    EXPECT_GE((r - Eigen::Vector3d(0.1, 0.1, 0.1)).norm(), 0.05 + 0.4 * 0.01);
+    const bool in_bar = std::abs(r.x() - 0.3) < 0.05 && std::hypot(r.y() - 0.1, r.z() - 0.1) < 0.03;
+    EXPECT_FALSE(in_bar);
+  }
+  const std::string resolved = io::resolvedSceneYaml(c3);
+  EXPECT_NE(resolved.find("sphere:"), std::string::npos);
+  EXPECT_EQ(io::resolvedSceneYaml(io::loadSceneText(resolved, "r.yaml")), resolved);
+
+  EXPECT_NE(errorOf(std::string(kBase) + "  - sphere: {centre: [0.2, 0.1], radius: 0.05}\n").find("a sphere is 3D only"),
+            std::string::npos);
+  EXPECT_NE(errorOf(std::string(kBase) + "  - cylinder: {centre: [0.2, 0.1], radius: 0.005}\n")
+                .find("radius 0.005 m is finer than the resolution allows"),
+            std::string::npos);
 }

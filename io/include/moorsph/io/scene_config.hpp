@@ -45,6 +45,11 @@ struct BoxObstacleConfig {
 /// A closed triangle mesh (STL/OBJ, 3D only) sampled into boundary particles.
 struct MeshConfig {
   std::string name = "mesh";
+  std::string shape = "file";   ///< "file", or "sphere" / "cylinder" generated in 3D
+  Triple centre{0.0, 0.0, 0.0}; ///< sphere, cylinder [m]
+  double radius = 0.0;          ///< sphere, cylinder [m]
+  double length = 0.0;          ///< cylinder [m]
+  int axis = 2;                 ///< cylinder: 0, 1, 2 for x, y, z
   std::string file;             ///< as written in the scene
   std::string path;             ///< resolved against the scene file's folder
   double scale = 1.0;           ///< file units -> m
@@ -52,6 +57,14 @@ struct MeshConfig {
   bool inward = false;          ///< normals into the enclosed volume (a container)
   bool track_reaction = false;
   TriangleMesh mesh;            ///< scaled and translated [m]
+};
+
+/// A cylinder in a 2D scene: a circle in the x-y plane (an obstacle).
+struct CircleConfig {
+  std::string name = "circle";
+  double x = 0.0, y = 0.0;  ///< centre [m]
+  double radius = 0.0;      ///< [m]
+  bool track_reaction = false;
 };
 
 /// A block of water on the fluid lattice.
@@ -145,6 +158,7 @@ struct SceneConfig {
   std::vector<TankConfig> tanks;
   std::vector<BoxObstacleConfig> boxes;
   std::vector<MeshConfig> meshes;
+  std::vector<CircleConfig> circles;
   std::vector<WaterConfig> water;
   PistonConfig piston;
   std::vector<DampingZoneConfig> damping_zones;
