@@ -1,0 +1,55 @@
+// The method section of a scene file: the reference preset with options on top.
+#include "scene_sections.hpp"
+
+namespace moorsph::io::detail {
+
+void readMethod(MapReader& top, SceneConfig& c) {
+  if (!top.has("method")) {
+    top.child("method");
+    return;
+  }
+  MapReader m(top.child("method"), "method", top.source());
+  const std::string preset = m.text("preset", "reference");
+  if (preset != "reference") m.fail("preset", "unknown preset '" + preset + "' (known: reference)");
+  fluid::MethodParameters& p = c.method;
+  p = fluid::MethodParameters::reference();
+  p.h_factor = m.positive("h_factor", p.h_factor, "smoothing length h / dx");
+  if (p.h_factor < 1.0 || p.h_factor > 2.5) m.fail("h_factor", "expected h / dx in [1, 2.5] (reference 1.2)");
+  p.cfl = m.positive("cfl", p.cfl, "CFL number");
+  if (p.cfl > 1.0) m.fail("cfl", "expected a CFL number in (0, 1] (reference 0.5)");
+  p.predictor_fraction = m.positive("predictor_fraction", p.predictor_fraction, "fraction of dt the predictor advances");
+  if (p.predictor_fraction > 1.0) m.fail("predictor_fraction", "expected a value in (0, 1] (reference 1, midpoint 0.5)");
+  p.force_dt_factor = m.positive("force_dt_factor", p.force_dt_factor, "factor of the force time-step bound");
+  p.gamma = m.positive("gamma", p.gamma, "Tait exponent");
+  p.xsph_eps = m.positive("xsph_eps", p.xsph_eps, "XSPH epsilon", true);
+  if (p.xsph_eps > 1.0) m.fail("xsph_eps", "expected a value in [0, 1] (reference 0.5)");
+  const std::string form = m.text("xsph_form", "reference");
+  if (form == "reference") p.xsph_form = fluid::XsphForm::Reference;
+  else if (form == "monaghan") p.xsph_form = fluid::XsphForm::Monaghan;
+  else m.fail("xsph_form", "expected 'reference' or 'monaghan', got '" + form + "'");
+  p.viscosity_xi = m.positive("viscosity_xi", p.viscosity_xi, "Cleary xi");
+  p.viscosity_beta_factor = m.positive("viscosity_beta_factor", p.viscosity_beta_factor, "beta / dx", true);
+  p.boundary_offset = m.positive("b_off", p.boundary_offset, "wall offset in units of dx", true);
+  if (p.boundary_offset > 1.0) m.fail("b_off", "expected a wall offset in [0, 1] dx (reference 0.5)");
+  p.boundary_strength = m.positive("boundary_strength", p.boundary_strength, "wall force scale");
+  p.skin_factor = m.positive("skin_factor", p.skin_factor, "Verlet skin / 2h");
+  if (m.has("density_diffusion")) {
+    MapReader d(m.child("density_diffusion"), "method.density_diffusion", top.source());
+    p.density_diffusion_delta = d.positive("delta", p.density_diffusion_delta, "delta-SPH coefficient");
+    const std::string f = d.text("form", "fourtakas");
+    if (f == "fourtakas") p.density_diffusion_form = fluid::DensityDiffusionForm::Fourtakas;
+    else if (f == "molteni_colagrossi") p.density_diffusion_form = fluid::DensityDiffusionForm::MolteniColagrossi;
+    else d.fail("form", "expected 'fourtakas' or 'molteni_colagrossi', got '" + f + "'");
+    d.finish();
+  } else {
+    m.child("density_diffusion");
+  }
+  const bool changed = m.has("h_factor") || m.has("cfl") || m.has("predictor_fraction") || m.has("xsph_form") ||
+                       m.has("b_off") || m.has("density_diffusion") || m.has("force_dt_factor") || m.has("gamma") ||
+                       m.has("xsph_eps") || m.has("viscosity_xi") || m.has("viscosity_beta_factor") ||
+                       m.has("boundary_strength") || m.has("skin_factor");
+  p.name = changed ? "reference+options" : "reference";
+  m.finish();
+}
+
+}  // namespace moorsph::io::detail
