@@ -2,6 +2,7 @@
 //   moorsph run SCENE.yaml [--out DIR] [--threads N] [--end T] [--set key=value ...] [--restart CKPT]
 //   moorsph check SCENE.yaml      validate and estimate the cost
 //   moorsph export DIR --csv      time series as CSV files
+//   moorsph plot DIR              time series as PNG plots
 // With no subcommand it runs the built-in demo scene, a 2D dam break, and says where
 // its output went (the README's first command relies on this).
 #include <CLI/CLI.hpp>
@@ -102,9 +103,13 @@ int main(int argc, char** argv) {
   export_cmd->add_option("dir", export_dir, "run directory")->required()->check(CLI::ExistingDirectory);
   export_cmd->add_flag("--csv", export_csv, "write DIR/csv/<group>.<name>.csv (time first, SI units in the header)")->required();
 
+  std::string plot_dir;
+  CLI::App* plot_cmd = app.add_subcommand("plot", "PNG plots of every time series of a run directory (DIR/plots/<group>.png)");
+  plot_cmd->add_option("dir", plot_dir, "run directory")->required()->check(CLI::ExistingDirectory);
+
   app.footer(
       "Exit codes: 0 success, 1 bad arguments, 2 bad input (scene or checkpoint rejected), 3 the run stopped on a "
-      "numerical failure (failure checkpoint and diagnostic written), 4 output could not be written, 130 interrupted "
+      "numerical failure (failure checkpoint and diagnostic written), 4 output could not be written (or plotting unavailable), 130 interrupted "
       "(SIGINT/SIGTERM; checkpoint written).");
   try {
     app.parse(argc, argv);
@@ -114,6 +119,7 @@ int main(int argc, char** argv) {
   if (*run_cmd) return runScene(run);
   if (*check_cmd) return checkScene(check_scene, check_sets, check_threads);
   if (*export_cmd) return exportRun(export_dir);
+  if (*plot_cmd) return plotRun(plot_dir);
   try {
     return runDemo(demo);
   } catch (const std::invalid_argument& e) {

@@ -28,6 +28,9 @@ struct RunOptions {
 int runScene(const RunOptions& options);
 int checkScene(const std::string& scene, const std::vector<std::string>& sets, int threads);
 int exportRun(const std::string& directory);
+/// PNG plots of every series of DIR/series.h5 in DIR/plots (needs /usr/bin/python3
+/// with h5py and matplotlib; MOORSPH_PYTHON overrides the interpreter).
+int plotRun(const std::string& directory);
 
 /// What SIGINT/SIGTERM do: ask the running scene to stop after its current step.
 void requestStop();

@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <string>
 #include "run/progress.hpp"
 
@@ -69,4 +70,24 @@ TEST(Cli, ProgressLineSaysWhereTheRunIs) {
   const std::string line = progress.describe(0.5, 1000, 1e-4);
   for (const char* expected : {"t = 0.5000 / 2 s", "( 25%)", "steps/s", "dt = 1.00e-04 s", "real-time factor", "ETA"})
     EXPECT_NE(line.find(expected), std::string::npos) << expected << " in " << line;
+}
+
+TEST(Cli, PlotWritesPngPerSeries) {
+  if (std::system("/usr/bin/python3 -c 'import h5py, matplotlib' > /dev/null 2>&1") != 0)
+    GTEST_SKIP() << "/usr/bin/python3 lacks h5py or matplotlib (python3-h5py, python3-matplotlib)";
+  const std::string dir = testing::TempDir() + "moorsph_plot";
+  std::filesystem::remove_all(dir);
+  Result r = run("run " + source() + "/cases/dam_break_2d.yaml --end 0.02 --threads 1 --out " + dir +
+                 " --set resolution.dx=0.01 --set output.particles_interval=0");
+  ASSERT_EQ(r.code, 0) << r.output;
+  r = run("plot " + dir);
+  ASSERT_EQ(r.code, 0) << r.output;
+  for (const char* group : {"energy", "timing", "gauges", "probes"}) {
+    std::ifstream png(dir + "/plots/" + group + ".png", std::ios::binary);
+    char magic[8] = {};
+    png.read(magic, 8);
+    EXPECT_EQ(std::string(magic + 1, 3), "PNG") << group;
+  }
+  std::filesystem::create_directories(dir + "/empty");
+  EXPECT_EQ(run("plot " + dir + "/empty").code, 2);
 }
