@@ -7,6 +7,7 @@
 #include <csignal>
 #include <cstdio>
 #include <filesystem>
+#include <yaml-cpp/yaml.h>
 #include <fstream>
 #include <moorsph/cases/run_recorder.hpp>
 #include <moorsph/io/checkpoint.hpp>
@@ -32,6 +33,28 @@ std::string format(const char* fmt, double a, double b = 0.0, double c = 0.0) {
   return text;
 }
 
+/// The first top-level key that defines the particle set (dimension, resolution,
+/// geometry, piston plate) and differs between two resolved scenes, or "".
+std::string changedParticleSetKey(const std::string& saved, const std::string& current) {
+  const YAML::Node a = YAML::Load(saved), b = YAML::Load(current);
+  for (const char* key : {"dim", "resolution", "geometry"}) {
+    YAML::Emitter ea, eb;
+    ea << a[key];
+    eb << b[key];
+    if (std::string(ea.c_str()) != eb.c_str()) return key;
+  }
+  const YAML::Node pa = a["piston"], pb = b["piston"];
+  if (pa.IsDefined() != pb.IsDefined()) return "piston";
+  if (pa.IsDefined())
+    for (const char* key : {"x", "bottom", "top", "z"}) {
+      YAML::Emitter ea, eb;
+      ea << pa[key];
+      eb << pb[key];
+      if (std::string(ea.c_str()) != eb.c_str()) return std::string("piston.") + key;
+    }
+  return "";
+}
+
 template <int D>
 int runDim(const io::SceneConfig& config, const RunOptions& o, const std::string& out) {
   using Clock = std::chrono::steady_clock;
@@ -55,6 +78,11 @@ int runDim(const io::SceneConfig& config, const RunOptions& o, const std::string
       throw io::SceneError(o.restart, "", "the checkpoint holds " + std::to_string(particles.size()) +
                                               " fluid particles, the scene " + std::to_string(built.scene.fluid.size()) +
                                               ": it belongs to another scene");
+    const std::string changed = changedParticleSetKey(restored.scene_yaml, resolved);
+    if (!changed.empty())
+      throw io::SceneError(o.restart, changed,
+                           "differs from the scene the checkpoint was written for; a restart may change only what "
+                           "does not alter the particle set (end time, output, method options, sensors)");
   }
   fluid::FluidSimulation<D> sim(built.scene.setup, particles, built.scene.boundary);
   io::addSceneEffects(sim, config, built);
@@ -163,7 +191,8 @@ int runScene(const RunOptions& o) {
   }
   std::string out = o.out;
   if (out.empty()) {
-    out = !o.restart.empty() ? fs::path(o.restart).parent_path().string() + ".restart" : "moorsph-output/" + config.name;
+    const fs::path restart_dir = fs::absolute(o.restart).parent_path();
+    out = !o.restart.empty() ? restart_dir.string() + ".restart" : "moorsph-output/" + config.name;
   }
   std::error_code ec;
   fs::create_directories(out, ec);

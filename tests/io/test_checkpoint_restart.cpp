@@ -173,3 +173,20 @@ output: {interval: 0.05, checkpoint_minutes: 0}
   EXPECT_EQ(a.steps, b.steps);
   EXPECT_EQ(countDifferences(a, b), 0u);
 }
+
+TEST(Checkpoint, RestartRejectsAnotherGeometry) {
+  const std::string dir = freshDir("moorsph_restart_geometry");
+  const std::string scene = test::writeScene(dir + "/scene.yaml", test::kSmallDamBreak);
+  ASSERT_EQ(app::runScene(options(scene, dir + "/first", 0.02)), app::kSuccess);
+  // Same particle count, tank moved: rejected before running.
+  app::RunOptions moved = options(scene, dir + "/moved", 0.04);
+  moved.restart = dir + "/first/checkpoint.h5";
+  moved.sets = {"geometry[0].tank.upper=[0.5, 0.3]"};
+  EXPECT_EQ(app::runScene(moved), app::kBadInput);
+  // End time, output cadence and method options may change.
+  app::RunOptions allowed = options(scene, "", 0.04);
+  allowed.restart = dir + "/first/checkpoint.h5";
+  allowed.sets = {"output.interval=0.005", "method.cfl=0.4"};
+  EXPECT_EQ(app::runScene(allowed), app::kSuccess);
+  EXPECT_TRUE(std::filesystem::exists(dir + "/first.restart/checkpoint.h5"));  // the default directory
+}
