@@ -2,6 +2,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <moorsph/io/mesh_sampling.hpp>
 #include <moorsph/io/primitive_shapes.hpp>
 #include "scene_sections.hpp"
 
@@ -120,6 +121,33 @@ MeshConfig readMeshItem(MapReader& m, const SceneConfig& c) {
     }
   if (uniqueName(c, g.name).empty()) m.fail("name", "another surface is already named '" + g.name + "'");
   return g;
+}
+
+/// Distance [m] from a point to the surface of an axis-aligned box (inside or out).
+double distanceToBox(const BoxExtent& b, const Triple& p, int dim) {
+  double outside2 = 0.0, inside = 1e300;
+  bool in = true;
+  for (int k = 0; k < dim; ++k) {
+    const double below = b.lower[k] - p[k], above = p[k] - b.upper[k];
+    const double out = std::max({below, above, 0.0});
+    outside2 += out * out;
+    in = in && out == 0.0;
+    inside = std::min(inside, std::min(-below, -above));
+  }
+  return in ? inside : std::sqrt(outside2);
+}
+
+/// Distance [m] from a probe's point to the named surface.
+double distanceToSurface(const SceneConfig& c, const std::string& name, const Triple& p) {
+  for (const auto& t : c.tanks)
+    if (t.name == name) return distanceToBox(t.box, p, c.dim);
+  for (const auto& b : c.boxes)
+    if (b.name == name) return distanceToBox(b.box, p, c.dim);
+  for (const auto& g : c.meshes)
+    if (g.name == name) return distanceToMesh(g.mesh, Eigen::Vector3d(p[0], p[1], p[2]));
+  for (const auto& k : c.circles)
+    if (k.name == name) return std::abs(std::hypot(p[0] - k.x, p[1] - k.y) - k.radius);
+  return 0.0;
 }
 
 }  // namespace
@@ -251,6 +279,13 @@ void readSensors(MapReader& top, SceneConfig& c) {
       if (!found) {
         const std::string guess = closestWord(p.surface, names);
         m.fail("surface", "no tank, box, mesh, sphere or cylinder is named '" + p.surface + "'" + (guess.empty() ? "" : " (did you mean '" + guess + "'?)"));
+      }
+      const double off = distanceToSurface(c, p.surface, p.point);
+      if (off > c.spacing()) {
+        char msg[200];
+        std::snprintf(msg, sizeof msg, "the point is %.3g m from the surface '%s': expected on it (within the boundary spacing %g m)",
+                      off, p.surface.c_str(), c.spacing());
+        m.fail("point", msg);
       }
       m.finish();
       c.probes.push_back(p);

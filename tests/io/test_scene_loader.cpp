@@ -131,6 +131,11 @@ TEST(SceneLoader, OutOfRangeValues) {
   EXPECT_NE(f.find("the box is 0.015 m along x, finer than the resolution allows"), std::string::npos) << f;
   EXPECT_NE(f.find("s.yaml:10:"), std::string::npos) << f;
 
+  const std::string probe = errorOf(std::string(kBase) +
+                                    "pressure_probes:\n  - {surface: tank, point: [0.2, 0.1], normal: [0, 1]}\n");
+  EXPECT_NE(probe.find("'pressure_probes[0].point': the point is 0.1 m from the surface 'tank'"), std::string::npos)
+      << probe;
+
   std::string outside = kBase;
   outside.replace(outside.find("[0.1, 0.2]"), 10, "[0.5, 0.2]");
   EXPECT_NE(errorOf(outside).find("must lie inside a tank"), std::string::npos) << errorOf(outside);
