@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <fstream>
 #include <string>
+#include <moorsph/fluid/waves/piston_signal.hpp>
 #include <moorsph/io/scene_builder.hpp>
 #include <moorsph/io/scene_loader.hpp>
 #include "run_scene.hpp"
@@ -42,6 +43,15 @@ int checkDim(const io::SceneConfig& c) {
   for (const auto& e : sim.effectNames()) effects += " " + e;
   std::printf("  effects:%s (method %s)\n", effects.c_str(), c.method.name.c_str());
   std::printf("  sensors: %zu wave gauges, %zu pressure probes\n", c.gauges.size(), c.probes.size());
+  if (c.piston.present && c.piston.signal == "regular") {
+    // What resolution the waves get: particles per wavelength and per wave height.
+    const auto& p = c.piston;
+    const double g = std::sqrt(c.gravity[0] * c.gravity[0] + c.gravity[1] * c.gravity[1] + c.gravity[2] * c.gravity[2]);
+    const fluid::waves::AiryWave wave(0.5 * p.wave_height, p.period, p.depth, g);
+    std::printf("  piston: H = %g m, T = %g s, d = %g m: stroke %.4g m, wavelength %.4g m (%.0f dx), H = %.1f dx, kd = %.3g\n",
+                p.wave_height, p.period, p.depth, fluid::waves::pistonStroke(p.wave_height, p.period, p.depth, g),
+                wave.wavelength(), wave.wavelength() / c.dx, p.wave_height / c.dx, wave.waveNumber() * p.depth);
+  }
   // Timed sample: a few steps, at most ~2 s of wall time; the first step (list
   // building, first touches) is not counted.
   sim.step();

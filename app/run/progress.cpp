@@ -19,7 +19,8 @@ std::string duration(double seconds) {
 
 Progress::Progress(RunLog& log, double start_time, double end_time, double log_interval)
     : log_(log), start_time_(start_time), end_time_(end_time), log_interval_(log_interval),
-      tty_(isatty(fileno(stdout)) != 0), wall_start_(std::chrono::steady_clock::now()), last_print_(wall_start_) {}
+      tty_(isatty(fileno(stdout)) != 0), wall_start_(std::chrono::steady_clock::now()), last_print_(wall_start_),
+      last_logged_(wall_start_) {}
 
 std::string Progress::describe(double time, std::size_t steps, double dt) const {
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start_).count();
@@ -46,6 +47,11 @@ void Progress::update(double time, std::size_t steps, double dt) {
     std::printf("\r\033[K%s", describe(time, steps, dt).c_str());
     std::fflush(stdout);
     line_shown_ = true;
+    // log.txt gets a line every log_interval also when the terminal shows the live line.
+    if (std::chrono::duration<double>(now - last_logged_).count() >= log_interval_) {
+      last_logged_ = now;
+      log_.fileOnly(describe(time, steps, dt));
+    }
   } else {
     log_.line(describe(time, steps, dt));
   }

@@ -26,7 +26,7 @@ class Progress {
   bool line_shown_ = false;
   std::size_t start_steps_ = 0;
   bool started_ = false;
-  std::chrono::steady_clock::time_point wall_start_, last_print_;
+  std::chrono::steady_clock::time_point wall_start_, last_print_, last_logged_;
 };
 
 }  // namespace moorsph::app

@@ -38,6 +38,11 @@ TEST(Cli, CheckReportsCountsStepsAndCosts) {
                                "dt <= 2.1428e-04 s", "at least 4667 steps", "estimated wall time", "memory:",
                                "effects: pressure viscosity xsph gravity walls"})
     EXPECT_NE(r.output.find(expected), std::string::npos) << expected << "\n" << r.output;
+  const Result flume = run("check " + source() + "/cases/piston_flume_2d.yaml --threads 1");
+  ASSERT_EQ(flume.code, 0) << flume.output;
+  EXPECT_NE(flume.output.find("piston: H = 0.03 m, T = 1.2 s, d = 0.3 m: stroke 0.02883 m"), std::string::npos)
+      << flume.output;
+  EXPECT_NE(flume.output.find("effects: pressure viscosity xsph gravity walls piston damping_zone"), std::string::npos);
 }
 
 TEST(Cli, ExitCodes) {
