@@ -63,7 +63,8 @@ TEST(RunOutput, BadSceneIsRejectedBeforeRunning) {
 TEST(RunOutput, ExampleScenesRun) {
   // Every annotated example under cases/ runs (a few steps each: end 0.01 s).
   const std::string source = std::getenv("MOORSPH_SOURCE_DIR") ? std::getenv("MOORSPH_SOURCE_DIR") : ".";
-  for (const char* name : {"dam_break_2d", "dam_break_3d", "hydrostatic_tank_2d", "cylinder_in_dam_break_3d", "piston_flume_2d"}) {
+  for (const char* name : {"dam_break_2d", "dam_break_3d", "hydrostatic_tank_2d", "cylinder_in_dam_break_3d", "piston_flume_2d",
+                           "spheric_test2"}) {
     SCOPED_TRACE(name);
     app::RunOptions o;
     o.scene = source + "/cases/" + name + ".yaml";

@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <string>
 #include <moorsph/io/scene_builder.hpp>
+#include "spheric_test2.hpp"
 #include <moorsph/io/scene_loader.hpp>
 
 using namespace moorsph;
@@ -276,4 +277,32 @@ geometry:
   EXPECT_NE(errorOf(std::string(kBase) + "  - cylinder: {centre: [0.2, 0.1], radius: 0.005}\n")
                 .find("radius 0.005 m is finer than the resolution allows"),
             std::string::npos);
+}
+
+TEST(SceneLoader, SphericTest2MatchesTheCppBuilder) {
+  const auto c = io::loadSceneFile(sourceDir() + "/cases/spheric_test2.yaml");
+  const auto from_file = io::buildScene<3>(c);
+  cases::spheric_test2::Spec spec;
+  spec.dx = 0.025;
+  spec.sound_speed = 46.5;  // the scene's round value (the builder's default is 46.454...)
+  const auto by_hand = cases::spheric_test2::build(spec);
+  const auto& a = from_file.scene;
+  const auto& b = by_hand.scene;
+  EXPECT_EQ(a.setup.sound_speed, b.setup.sound_speed);
+  EXPECT_EQ(a.setup.effects, b.setup.effects);
+  ASSERT_EQ(a.fluid.size(), b.fluid.size());
+  double worst = 0.0;
+  for (std::size_t i = 0; i < a.fluid.size(); ++i) {
+    worst = std::max(worst, (a.fluid.r[i] - b.fluid.r[i]).norm());
+    worst = std::max(worst, std::abs(a.fluid.rho[i] - b.fluid.rho[i]) / 1000.0);
+  }
+  EXPECT_LT(worst, 1e-12);
+  ASSERT_EQ(a.boundary.particles.size(), b.boundary.particles.size());
+  for (std::size_t k = 0; k < a.boundary.particles.size(); ++k) {
+    ASSERT_LT((a.boundary.particles.r[k] - b.boundary.particles.r[k]).norm(), 1e-12) << k;
+    ASSERT_EQ(a.boundary.particles.normalCount(k), b.boundary.particles.normalCount(k)) << k;
+  }
+  EXPECT_EQ(from_file.gauges.size(), 4u);
+  ASSERT_EQ(from_file.probes.size(), 4u);
+  EXPECT_EQ(from_file.probes[0].surface, by_hand.box_surface);
 }
