@@ -8,7 +8,8 @@ namespace moorsph::app {
 
 class RunLog {
  public:
-  explicit RunLog(const std::string& path) : file_(std::fopen(path.c_str(), "a")) {}
+  /// A fresh run starts the file; `append` continues it.
+  explicit RunLog(const std::string& path, bool append = false) : file_(std::fopen(path.c_str(), append ? "a" : "w")) {}
   ~RunLog() {
     if (file_) std::fclose(file_);
   }

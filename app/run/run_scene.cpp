@@ -58,6 +58,11 @@ std::string changedParticleSetKey(const std::string& saved, const std::string& c
 template <int D>
 int runDim(const io::SceneConfig& config, const RunOptions& o, const std::string& out) {
   using Clock = std::chrono::steady_clock;
+  // Files of an earlier run in the same directory would mix with this one's.
+  for (const char* stale : {"particles.h5", "particles.xmf", "error.txt", "failure.checkpoint.h5"}) {
+    std::error_code ignored;
+    fs::remove(fs::path(out) / stale, ignored);
+  }
   RunLog log(out + "/log.txt");
   if (!log.ok()) {
     std::fprintf(stderr, "error: cannot write %s/log.txt\n", out.c_str());
@@ -195,6 +200,13 @@ int runScene(const RunOptions& o) {
     out = !o.restart.empty() ? restart_dir.string() + ".restart" : "moorsph-output/" + config.name;
   }
   std::error_code ec;
+  if (!o.restart.empty() && fs::exists(out) &&
+      fs::equivalent(fs::absolute(out), fs::absolute(o.restart).parent_path(), ec)) {
+    std::fprintf(stderr, "error: --out %s is the directory of the checkpoint: the restart would overwrite the series of "
+                 "the run that wrote it; choose another directory (the default is <checkpoint dir>.restart)\n",
+                 out.c_str());
+    return kBadArguments;
+  }
   fs::create_directories(out, ec);
   if (ec) {
     std::fprintf(stderr, "error: cannot create %s: %s\n", out.c_str(), ec.message().c_str());

@@ -183,6 +183,10 @@ TEST(Checkpoint, RestartRejectsAnotherGeometry) {
   moved.restart = dir + "/first/checkpoint.h5";
   moved.sets = {"geometry[0].tank.upper=[0.5, 0.3]"};
   EXPECT_EQ(app::runScene(moved), app::kBadInput);
+  // Restarting into the checkpoint's own directory would overwrite its series.
+  app::RunOptions same = options(scene, dir + "/first", 0.04);
+  same.restart = dir + "/first/checkpoint.h5";
+  EXPECT_EQ(app::runScene(same), app::kBadArguments);
   // End time, output cadence and method options may change.
   app::RunOptions allowed = options(scene, "", 0.04);
   allowed.restart = dir + "/first/checkpoint.h5";
