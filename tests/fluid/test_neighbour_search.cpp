@@ -61,7 +61,9 @@ void expectListsMatchBruteForce(const Domain<D>& domain, int n) {
     ASSERT_EQ(expected_b, found_b) << "boundary neighbours of " << i;
   }
   EXPECT_GT(pairs_checked, 10u * fluid.size());
-  if (domain.anyPeriodic()) EXPECT_GT(periodic_pairs, 0u) << "test did not exercise the periodic wrap";
+  if (domain.anyPeriodic()) {
+    EXPECT_GT(periodic_pairs, 0u) << "test did not exercise the periodic wrap";
+  }
 }
 
 }  // namespace
