@@ -1,14 +1,16 @@
-// Light-body hard case (issue 5): a fully submerged circular cylinder (2D) lighter
-// than water, held while the fluid settles, then released from rest. Potential flow
-// gives the 2D cylinder an added mass equal to the displaced mass rho pi R^2, so its
-// initial acceleration is a0 = (1 - r)/(r + 1) g for density ratio r; at r = 0.1 the
-// added mass is ten times the body's, the classic failure case of explicit coupling.
+// Light-body hard case (issue 5): a fully submerged body lighter than water, a
+// circular cylinder in 2D or a sphere in 3D, held while the fluid settles, then
+// released from rest. Potential flow gives the cylinder an added mass C_a = 1 times
+// the displaced mass and the sphere C_a = 1/2, so the initial acceleration is
+// a0 = (1 - r)/(r + C_a) g for density ratio r; at r = 0.1 the cylinder's added mass is
+// ten times its own, the classic failure case of explicit coupling.
 // Prints per ratio whether the run stayed finite, the mean acceleration over the first
 // 20 ms against a0, and the rise after 0.1 s.
-// Usage: moorsph_submerged_release [dx=0.01] [ratios...]
+// Usage: moorsph_submerged_release [--3d] [dx=0.01] [ratios...]
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <string>
 #include <vector>
 #include <moorsph/coupling/co_simulation.hpp>
 #include <moorsph/fluid/shape_sampling.hpp>
@@ -18,49 +20,56 @@ namespace {
 
 using namespace moorsph;
 
-coupling::CoSimulation<2> buildScene(double dx, double ratio, double radius, const fluid::Vec<2>& centre, double release) {
+template <int D>
+double displacedVolume(double radius) {
   const double pi = std::acos(-1.0);
-  fluid::TankSpec<2> spec;
-  spec.size = fluid::Vec<2>(0.6, 0.6);
-  spec.water_upper = fluid::Vec<2>(0.6, 0.5);
+  return D == 2 ? pi * radius * radius : 4.0 / 3.0 * pi * radius * radius * radius;
+}
+
+template <int D>
+coupling::CoSimulation<D> buildScene(double dx, double ratio, double radius, const fluid::Vec<D>& centre, double release) {
+  fluid::TankSpec<D> spec;
+  const double width = D == 2 ? 0.6 : 0.3;  // 3D: a smaller tank keeps the particle count for this machine
+  spec.size = fluid::Vec<D>::Constant(width);
+  spec.size[1] = 0.6;
+  spec.water_upper = spec.size;
+  spec.water_upper[1] = 0.5;
   spec.dx = dx;
   spec.fluid.sound_speed = 10.0 * std::sqrt(2.0 * 9.81 * 0.5);
   spec.fluid.mu = 0.01;
   spec.fluid.effects = {"pressure", "viscosity", "xsph", "density_diffusion", "gravity", "walls"};
-  auto scene = fluid::buildTankScene<2>(spec);
-  fluid::FluidParticles<2> water;
+  auto scene = fluid::buildTankScene<D>(spec);
+  fluid::FluidParticles<D> water;
   for (std::size_t i = 0; i < scene.fluid.size(); ++i)
     if ((scene.fluid.r[i] - centre).norm() >= radius + 0.5 * dx)
       water.add(scene.fluid.r[i], scene.fluid.v[i], scene.fluid.rho[i], scene.fluid.m[i]);
-  scene.boundary.addSurface(fluid::sampleSphere<2>(centre, radius, dx),
-                            fluid::SurfaceInfo{"cylinder", true, true, Eigen::Vector3d(centre[0], centre[1], 0.0)});
+  Eigen::Vector3d origin = Eigen::Vector3d::Zero();
+  origin.head<D>() = centre;
+  scene.boundary.addSurface(fluid::sampleSphere<D>(centre, radius, dx), fluid::SurfaceInfo{"body", true, true, origin});
   auto system = std::make_unique<bodies::MultibodySystem>();
   bodies::RigidBodySpec body;
-  body.name = "cylinder";
-  body.mass = ratio * 1000.0 * pi * radius * radius;  // per metre of span
-  body.mobilizer = bodies::Mobilizer::Planar;
-  body.fixedDofs[static_cast<int>(bodies::Dof::RotationZ)] = true;
-  body.inertiaAboutCom = Eigen::Matrix3d::Identity() * 0.5 * body.mass * radius * radius;
-  body.initial.position = Eigen::Vector3d(centre[0], centre[1], 0.0);
+  body.name = "body";
+  body.mass = ratio * 1000.0 * displacedVolume<D>(radius);  // 2D: per metre of span
+  body.mobilizer = D == 2 ? bodies::Mobilizer::Planar : bodies::Mobilizer::Free;
+  for (int k = 3; k < 6; ++k) body.fixedDofs[k] = true;  // no rotation: heave against potential flow
+  body.inertiaAboutCom = Eigen::Matrix3d::Identity() * 0.4 * body.mass * radius * radius;
+  body.initial.position = origin;
   system->addBody(body);
   system->initialize();
-  return coupling::CoSimulation<2>(std::make_unique<fluid::FluidSimulation<2>>(scene.setup, water, scene.boundary),
+  return coupling::CoSimulation<D>(std::make_unique<fluid::FluidSimulation<D>>(scene.setup, water, scene.boundary),
                                    std::move(system), {{0, 1}}, {release, 0.0});
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
-  const double dx = argc > 1 ? std::atof(argv[1]) : 0.01;
-  std::vector<double> ratios{0.1, 0.2, 0.5, 0.8};
-  if (argc > 2) ratios.clear();
-  for (int a = 2; a < argc; ++a) ratios.push_back(std::atof(argv[a]));
-  const double radius = 0.05, release = 0.3;
-  const fluid::Vec<2> centre(0.3, 0.2);
-  std::printf("# cylinder R = %.3f m (%.1f dx), dx = %.4f m, release at %.2f s\n", radius, radius / dx, dx, release);
-  std::printf("# ratio  stable  mean_accel_0-20ms  potential_flow_a0  ratio_to_a0  rise_0.1s_m\n");
+template <int D>
+void sweep(double dx, const std::vector<double>& ratios) {
+  const double radius = 0.05, release = 0.3, added_mass_coefficient = D == 2 ? 1.0 : 0.5;
+  fluid::Vec<D> centre = fluid::Vec<D>::Constant(D == 2 ? 0.3 : 0.15);
+  centre[1] = 0.2;
+  std::printf("# %s R = %.3f m (%.1f dx), dx = %.4f m, release at %.2f s, C_a = %.1f\n", D == 2 ? "cylinder" : "sphere",
+              radius, radius / dx, dx, release, added_mass_coefficient);
+  std::printf("# ratio  stable  mean_accel_0-20ms  potential_flow_a0  ratio_to_a0  rise_0.1s_m  particles\n");
   for (double ratio : ratios) {
-    auto co = buildScene(dx, ratio, radius, centre, release);
+    auto co = buildScene<D>(dx, ratio, radius, centre, release);
     double v20 = 0.0;
     bool stable = true;
     try {
@@ -72,8 +81,22 @@ int main(int argc, char** argv) {
       stable = false;
       std::fprintf(stderr, "ratio %.2f: %s\n", ratio, e.what());
     }
-    const double a0 = (1.0 - ratio) / (ratio + 1.0) * 9.81;
-    std::printf("%6.2f  %6s  %17.3f  %17.3f  %11.3f  %11.4f\n", ratio, stable ? "yes" : "NO", v20, a0, v20 / a0,
-                co.bodies().kinematics(0).position[1] - centre[1]);
+    const double a0 = (1.0 - ratio) / (ratio + added_mass_coefficient) * 9.81;
+    std::printf("%6.2f  %6s  %17.3f  %17.3f  %11.3f  %11.4f  %9zu\n", ratio, stable ? "yes" : "NO", v20, a0, v20 / a0,
+                co.bodies().kinematics(0).position[1] - centre[1], co.fluid().fluid().size());
   }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  int arg = 1;
+  const bool three_d = argc > 1 && std::string(argv[1]) == "--3d";
+  if (three_d) ++arg;
+  const double dx = argc > arg ? std::atof(argv[arg]) : 0.01;
+  std::vector<double> ratios{0.1, 0.2, 0.5, 0.8};
+  if (argc > arg + 1) ratios.clear();
+  for (int a = arg + 1; a < argc; ++a) ratios.push_back(std::atof(argv[a]));
+  if (three_d) sweep<3>(dx, ratios);
+  else sweep<2>(dx, ratios);
 }
