@@ -9,6 +9,7 @@
 #include <fstream>
 #include <map>
 #include <moorsph/io/mesh_sampling.hpp>
+#include <moorsph/io/primitive_shapes.hpp>
 
 using namespace moorsph;
 using Eigen::Vector3d;
@@ -54,37 +55,11 @@ void writeBinaryStl(const std::string& path, const io::TriangleMesh& m) {
   }
 }
 
-/// An icosphere: the icosahedron subdivided `levels` times, projected on the sphere.
+/// An icosphere subdivided `levels` times: io::makeSphereMesh stops when the edge
+/// (1.0515 R for the icosahedron, halved by each subdivision) is below its bound.
 io::TriangleMesh sphereMesh(double radius, int levels) {
-  io::TriangleMesh m;
-  const double t = (1.0 + std::sqrt(5.0)) / 2.0;
-  const double v[12][3] = {{-1, t, 0}, {1, t, 0}, {-1, -t, 0}, {1, -t, 0}, {0, -1, t}, {0, 1, t},
-                           {0, -1, -t}, {0, 1, -t}, {t, 0, -1}, {t, 0, 1}, {-t, 0, -1}, {-t, 0, 1}};
-  for (const auto& p : v) m.vertices.push_back(Vector3d(p[0], p[1], p[2]).normalized());
-  m.triangles = {{0, 11, 5}, {0, 5, 1}, {0, 1, 7}, {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
-                 {11, 10, 2}, {10, 7, 6}, {7, 1, 8}, {3, 9, 4}, {3, 4, 2}, {3, 2, 6}, {3, 6, 8},
-                 {3, 8, 9}, {4, 9, 5}, {2, 4, 11}, {6, 2, 10}, {8, 6, 7}, {9, 8, 1}};
-  for (int l = 0; l < levels; ++l) {
-    std::map<std::pair<int, int>, int> middle;
-    auto mid = [&](int a, int b) {
-      const auto key = std::minmax(a, b);
-      const auto it = middle.find(key);
-      if (it != middle.end()) return it->second;
-      m.vertices.push_back((m.vertices[a] + m.vertices[b]).normalized());
-      return middle[key] = static_cast<int>(m.vertices.size()) - 1;
-    };
-    std::vector<std::array<int, 3>> finer;
-    for (const auto& tri : m.triangles) {
-      const int a = mid(tri[0], tri[1]), b = mid(tri[1], tri[2]), c = mid(tri[2], tri[0]);
-      finer.push_back({tri[0], a, c});
-      finer.push_back({tri[1], b, a});
-      finer.push_back({tri[2], c, b});
-      finer.push_back({a, b, c});
-    }
-    m.triangles = finer;
-  }
-  for (auto& p : m.vertices) p *= radius;
-  return m;
+  const double edge = 1.0515 * radius / std::pow(2.0, levels);
+  return io::makeSphereMesh(Vector3d::Zero(), radius, edge * (1.0 + 1e-9));
 }
 
 /// Every particle of `a` has one in `b` at the same place with the same normals.
