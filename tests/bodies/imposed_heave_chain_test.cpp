@@ -1,8 +1,26 @@
 // All six imposed-heave chain cases of refdata/moordyn_quasistatic_chain (depths 50,
-// 200, 600 m; heave amplitudes 2 m and 5 m, period 10 s), 40 segments, against the
-// OrcaFlex fairlead tension series (~2.5 s). The 2 m cases meet MoorDyn's 15 %
-// criterion on the oscillation amplitude; the 5 m cases overshoot it by 14-19 % (the
-// bound here, 20 %, records that known deviation rather than hiding it).
+// 200, 600 m; fairlead heave amplitudes 2 m (A1) and 5 m (A2), period 10 s) against the
+// OrcaFlex fairlead tension series, with the line exactly as MoorDyn's input files
+// WD0050/0200/0600_Chain.txt define it (see refdata README):
+//  - 82, 82 and 170 segments;
+//  - BA given there as "-1": MoorDyn reads a negative BA as BA = zeta l sqrt(EA m) with
+//    zeta = 1, which is HALF the critical damping of one segment on its node mass
+//    (critical: 2 l sqrt(EA m)); so BA = l sqrt(EA m) here (internalDampingRatio 0.5);
+//  - seabed kBot = 1e5 Pa/m, cBot = 1e4 Pa s/m, friction 0.5; CaAx = 0.
+// An earlier version used 40 segments, twice that internal damping and a 30x stiffer
+// seabed; with MoorDyn's inputs the 5 m cases moved from +19/+16/+17 % to the figures
+// printed below.
+//
+// The criterion is MoorDyn's own (tests/quasi_static_chain.cpp, "15 % error on the
+// fairlead tension oscillation"): with dT = T(t) - T_static, ours from our initial
+// static tension and the reference's from the quasi-static codes' value,
+//   e = max_t |dT_ours - dT_ref| / (2 max_t |dT_ref|) < 0.15,
+// i.e. the worst pointwise error over the reference's peak-to-peak swing. The ratio of
+// half peak-to-peak amplitudes is printed and bounded too. What remains of the 5 m,
+// 600 m overshoot (+19 % on the amplitude, e = 0.11) is the axial (tangential) drag
+// term: with CdAx = 0 the same run undershoots by 9 %; it does not change with 2x the
+// segments (+19.2 %) or half the time step (+18.9 %), so it is the model's (and
+// MoorDyn's equations') difference from OrcaFlex, not discretisation.
 #include <moorsph/bodies/lumped_mass_line.hpp>
 
 #include <gtest/gtest.h>
@@ -39,80 +57,99 @@ std::vector<std::vector<double>> readTsv(const std::string& rel) {
   return rows;
 }
 
-struct Result {
-  double amplitudeError;  // relative, ours/ref - 1
-  double rmsOverAmplitude;
+struct Case {
+  const char* depth;
+  double anchorX, anchorZ, length;
+  int segments;            // NumSegs of the MoorDyn input
+  double staticTension;    // kN, quasi-static reference used by MoorDyn's test
 };
+constexpr Case kCases[] = {{"0050", 400.0, -50.0, 410.0, 82, 991.6},
+                           {"0200", 700.0, -200.0, 760.0, 82, 2065.4},
+                           {"0600", 1500.0, -600.0, 1700.0, 170, 5232.6}};
 
-Result runCase(const std::string& depth, const std::string& amp, const Eigen::Vector3d& anchor, double length) {
-  const auto motion = readTsv("ZZP1_" + amp + ".tsv");
-  const auto ref = readTsv("WD" + depth + "_Chain_ZZP1_" + amp + ".tsv");
-  EXPECT_GT(motion.size(), 200u);
-  EXPECT_GT(ref.size(), 150u);
+mb::LumpedMassParams moorDynChain(const Case& c) {
   mb::LumpedMassParams p;
-  p.length = length;
-  p.segments = 40;
+  p.length = c.length;
+  p.segments = c.segments;
   p.massPerLength = 390.0;
   p.diameter = 0.252;
   p.axialStiffness = 1.674e9;
+  p.internalDamping = (c.length / c.segments) * std::sqrt(p.axialStiffness * p.massPerLength);  // BA = -1
   p.cdNormal = 1.37;
   p.cdAxial = 0.64;
   p.caNormal = 1.0;
+  p.caAxial = 0.0;
   p.waterDensity = 1025.0;
   p.gravity = Eigen::Vector3d(0.0, 0.0, -9.81);
+  p.seabedStiffness = 1.0e5;
+  p.seabedDamping = 1.0e4;
   p.seabedFriction = 0.5;
-  p.internalDampingRatio = 1.0;
-  p.relaxationTime = 600.0;
+  p.relaxationTime = 200.0;  // TmaxIC
   p.relaxationDamping = 0.3;
-  mb::LumpedMassLine line(p);
+  return p;
+}
+
+struct Result {
+  double moorDynError;      // e above
+  double amplitudeError;    // half peak-to-peak, ours/ref - 1
+};
+
+Result runCase(const Case& c, const std::string& amp) {
+  const auto motion = readTsv("ZZP1_" + amp + ".tsv");
+  const auto ref = readTsv(std::string("WD") + c.depth + "_Chain_ZZP1_" + amp + ".tsv");
+  EXPECT_GT(motion.size(), 200u);
+  EXPECT_GT(ref.size(), 150u);
+  mb::LumpedMassLine line(moorDynChain(c));
   mb::LineEnds a;
-  a.anchor = anchor;
+  a.anchor = Eigen::Vector3d(c.anchorX, 0.0, c.anchorZ);
   a.fairlead = Eigen::Vector3d(motion[0][1], motion[0][2], motion[0][3]);
   line.initialize(a);
-  double ourMin = 1e30, ourMax = -1e30, refMin = 1e30, refMax = -1e30, sumSq = 0.0;
+  const double ourStatic = line.calcForces(a).fairleadTension / 1e3;
+  double ourMin = 1e30, ourMax = -1e30, refMin = 1e30, refMax = -1e30, worst = 0.0, refSwing = 0.0;
   std::size_t j = 0, matched = 0;
-  for (std::size_t r = 1; r < motion.size(); ++r) {
+  for (std::size_t r = 1; r < motion.size(); ++r) {  // t = -10 s ... 20 s, first 10 s unscored
     mb::LineEnds b = a;
     b.fairlead = Eigen::Vector3d(motion[r][1], motion[r][2], motion[r][3]);
     line.advance(motion[r][0] - motion[r - 1][0], a, b);
     a = b;
     while (j < ref.size() && ref[j][0] < motion[r][0] - 1e-6) ++j;
     if (j < ref.size() && std::abs(ref[j][0] - motion[r][0]) < 1e-6) {
-      const double t = line.calcForces(a).fairleadTension / 1e3;
+      const double t = line.calcForces(a).fairleadTension / 1e3, tRef = ref[j][3];
       ourMin = std::min(ourMin, t);
       ourMax = std::max(ourMax, t);
-      refMin = std::min(refMin, ref[j][3]);
-      refMax = std::max(refMax, ref[j][3]);
-      sumSq += (t - ref[j][3]) * (t - ref[j][3]);
+      refMin = std::min(refMin, tRef);
+      refMax = std::max(refMax, tRef);
+      worst = std::max(worst, std::abs((t - ourStatic) - (tRef - c.staticTension)));
+      refSwing = std::max(refSwing, std::abs(tRef - c.staticTension));
       ++matched;
     }
   }
   EXPECT_GT(matched, 150u);
   const double ours = 0.5 * (ourMax - ourMin), theirs = 0.5 * (refMax - refMin);
-  const Result res{ours / theirs - 1.0, std::sqrt(sumSq / matched) / theirs};
-  std::printf("[figure] chain WD%s %s: oscillation amplitude %.1f vs %.1f kN (%+.1f%%), rms difference %.0f%% of it\n",
-              depth.c_str(), amp.c_str(), ours, theirs, 100.0 * res.amplitudeError, 100.0 * res.rmsOverAmplitude);
+  const Result res{worst / (2.0 * refSwing), ours / theirs - 1.0};
+  std::printf("[figure] chain WD%s %s (%d segments): static %.1f kN (quasi-static ref %.1f); MoorDyn error %.3f "
+              "(worst %.1f kN over 2 x %.1f kN); amplitude %.1f vs %.1f kN (%+.1f%%)\n",
+              c.depth, amp.c_str(), c.segments, ourStatic, c.staticTension, res.moorDynError, worst, refSwing, ours,
+              theirs, 100.0 * res.amplitudeError);
   return res;
 }
 
 }  // namespace
 
-TEST(ImposedHeaveChain, TwoMetreHeaveWithinFifteenPercentAtAllDepths) {
-  const Result r50 = runCase("0050", "A1", {400.0, 0.0, -50.0}, 410.0);
-  const Result r200 = runCase("0200", "A1", {700.0, 0.0, -200.0}, 760.0);
-  const Result r600 = runCase("0600", "A1", {1500.0, 0.0, -600.0}, 1700.0);
-  for (const Result& r : {r50, r200, r600}) {
-    EXPECT_LT(std::abs(r.amplitudeError), 0.15);
-    EXPECT_LT(r.rmsOverAmplitude, 0.25);
+TEST(ImposedHeaveChain, TwoMetreHeaveWithinMoorDynsFifteenPercentAtAllDepths) {
+  for (const Case& c : kCases) {
+    const Result r = runCase(c, "A1");
+    EXPECT_LT(r.moorDynError, 0.15);
+    EXPECT_LT(std::abs(r.amplitudeError), 0.15);  // measured +11.0, -0.0, +2.4 %
   }
 }
 
-TEST(ImposedHeaveChain, FiveMetreHeaveOvershootsByLessThanTwentyPercent) {
-  const Result r50 = runCase("0050", "A2", {400.0, 0.0, -50.0}, 410.0);
-  const Result r200 = runCase("0200", "A2", {700.0, 0.0, -200.0}, 760.0);
-  const Result r600 = runCase("0600", "A2", {1500.0, 0.0, -600.0}, 1700.0);
-  for (const Result& r : {r50, r200, r600}) {
+TEST(ImposedHeaveChain, FiveMetreHeaveWithinMoorDynsFifteenPercentAtAllDepths) {
+  for (const Case& c : kCases) {
+    const Result r = runCase(c, "A2");
+    EXPECT_LT(r.moorDynError, 0.15);
+    // Amplitude ratio measured +10.2, +14.7, +19.0 %: the 600 m excess is the axial
+    // drag term (see the header), recorded here rather than hidden.
     EXPECT_LT(std::abs(r.amplitudeError), 0.20);
-    EXPECT_LT(r.rmsOverAmplitude, 0.15);
   }
 }
