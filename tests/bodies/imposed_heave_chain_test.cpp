@@ -1,26 +1,29 @@
 // All six imposed-heave chain cases of refdata/moordyn_quasistatic_chain (depths 50,
 // 200, 600 m; fairlead heave amplitudes 2 m (A1) and 5 m (A2), period 10 s) against the
-// OrcaFlex fairlead tension series, with the line exactly as MoorDyn's input files
+// OrcaFlex fairlead tension series, with the line as MoorDyn's input files
 // WD0050/0200/0600_Chain.txt define it (see refdata README):
 //  - 82, 82 and 170 segments;
 //  - BA given there as "-1": MoorDyn reads a negative BA as BA = zeta l sqrt(EA m) with
 //    zeta = 1, which is HALF the critical damping of one segment on its node mass
-//    (critical: 2 l sqrt(EA m)); so BA = l sqrt(EA m) here (internalDampingRatio 0.5);
-//  - seabed kBot = 1e5 Pa/m, cBot = 1e4 Pa s/m, friction 0.5; CaAx = 0.
-// An earlier version used 40 segments, twice that internal damping and a 30x stiffer
-// seabed; with MoorDyn's inputs the 5 m cases moved from +19/+16/+17 % to the figures
-// printed below.
+//    (critical: 2 l sqrt(EA m)); so BA = l sqrt(EA m) here;
+//  - seabed kBot = 1e5 Pa/m, cBot = 1e4 Pa s/m, friction 0.5; Cd 1.37, Ca 1, CaAx 0;
+// with one correction, to the axial drag. The reference is OrcaFlex, whose studless
+// chain has axial Cd 1.15 on an axial drag DIAMETER d_nom/pi (Orcina, OrcaFlex help,
+// "Chain"), i.e. a force per length 1/2 rho 1.15 d_nom |v|v. MoorDyn's file converts
+// only the diameter (0.64 = 1.15 / 1.8 for d_vol = 1.8 d_nom) and then applies it, as
+// this model does, on the area pi d_vol l: pi times OrcaFlex's axial drag. Here
+// CdAx = 0.64 / pi (= 1.15 d_nom / (pi d_vol) = 0.203). With MoorDyn's literal 0.64 the
+// tension swing came out too large, by up to +19 % (600 m, 5 m) on the amplitude, and
+// did not change with 2x the segments or half the step; with CdAx = 0 it was 9 % too
+// small; docs/moorings.md records the figures.
+// (An earlier version also used 40 segments, twice this internal damping and a 30x
+// stiffer seabed.)
 //
-// The criterion is MoorDyn's own (tests/quasi_static_chain.cpp, "15 % error on the
-// fairlead tension oscillation"): with dT = T(t) - T_static, ours from our initial
-// static tension and the reference's from the quasi-static codes' value,
-//   e = max_t |dT_ours - dT_ref| / (2 max_t |dT_ref|) < 0.15,
-// i.e. the worst pointwise error over the reference's peak-to-peak swing. The ratio of
-// half peak-to-peak amplitudes is printed and bounded too. What remains of the 5 m,
-// 600 m overshoot (+19 % on the amplitude, e = 0.11) is the axial (tangential) drag
-// term: with CdAx = 0 the same run undershoots by 9 %; it does not change with 2x the
-// segments (+19.2 %) or half the time step (+18.9 %), so it is the model's (and
-// MoorDyn's equations') difference from OrcaFlex, not discretisation.
+// Criteria: MoorDyn's own (tests/quasi_static_chain.cpp, "15 % error on the fairlead
+// tension oscillation"): with dT = T(t) - T_static, ours from our initial static
+// tension and the reference's from the quasi-static codes' value,
+//   e = max_t |dT_ours - dT_ref| / (2 max_t |dT_ref|) < 0.15;
+// and the stricter ratio of half peak-to-peak amplitudes, within 15 % as well.
 #include <moorsph/bodies/lumped_mass_line.hpp>
 
 #include <gtest/gtest.h>
@@ -36,6 +39,7 @@
 namespace mb = moorsph::bodies;
 
 namespace {
+constexpr double kPi = 3.14159265358979323846;
 
 std::vector<std::vector<double>> readTsv(const std::string& rel) {
   const char* src = std::getenv("MOORSPH_SOURCE_DIR");
@@ -76,7 +80,7 @@ mb::LumpedMassParams moorDynChain(const Case& c) {
   p.axialStiffness = 1.674e9;
   p.internalDamping = (c.length / c.segments) * std::sqrt(p.axialStiffness * p.massPerLength);  // BA = -1
   p.cdNormal = 1.37;
-  p.cdAxial = 0.64;
+  p.cdAxial = 0.64 / kPi;  // OrcaFlex axial drag diameter d/pi (header)
   p.caNormal = 1.0;
   p.caAxial = 0.0;
   p.waterDensity = 1025.0;
@@ -136,20 +140,18 @@ Result runCase(const Case& c, const std::string& amp) {
 
 }  // namespace
 
-TEST(ImposedHeaveChain, TwoMetreHeaveWithinMoorDynsFifteenPercentAtAllDepths) {
+TEST(ImposedHeaveChain, TwoMetreHeaveWithinFifteenPercentAtAllDepths) {
   for (const Case& c : kCases) {
     const Result r = runCase(c, "A1");
     EXPECT_LT(r.moorDynError, 0.15);
-    EXPECT_LT(std::abs(r.amplitudeError), 0.15);  // measured +11.0, -0.0, +2.4 %
+    EXPECT_LT(std::abs(r.amplitudeError), 0.15);
   }
 }
 
-TEST(ImposedHeaveChain, FiveMetreHeaveWithinMoorDynsFifteenPercentAtAllDepths) {
+TEST(ImposedHeaveChain, FiveMetreHeaveWithinFifteenPercentAtAllDepths) {
   for (const Case& c : kCases) {
     const Result r = runCase(c, "A2");
     EXPECT_LT(r.moorDynError, 0.15);
-    // Amplitude ratio measured +10.2, +14.7, +19.0 %: the 600 m excess is the axial
-    // drag term (see the header), recorded here rather than hidden.
-    EXPECT_LT(std::abs(r.amplitudeError), 0.20);
+    EXPECT_LT(std::abs(r.amplitudeError), 0.15);
   }
 }
