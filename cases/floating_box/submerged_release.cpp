@@ -12,64 +12,22 @@
 #include <cstdlib>
 #include <string>
 #include <vector>
-#include <moorsph/coupling/co_simulation.hpp>
-#include <moorsph/fluid/shape_sampling.hpp>
-#include <moorsph/fluid/tank_scene.hpp>
+#include <moorsph/cases/submerged_body.hpp>
 
 namespace {
 
 using namespace moorsph;
 
 template <int D>
-double displacedVolume(double radius) {
-  const double pi = std::acos(-1.0);
-  return D == 2 ? pi * radius * radius : 4.0 / 3.0 * pi * radius * radius * radius;
-}
-
-template <int D>
-coupling::CoSimulation<D> buildScene(double dx, double ratio, double radius, const fluid::Vec<D>& centre, double release) {
-  fluid::TankSpec<D> spec;
-  const double width = D == 2 ? 0.6 : 0.3;  // 3D: a smaller tank keeps the particle count for this machine
-  spec.size = fluid::Vec<D>::Constant(width);
-  spec.size[1] = 0.6;
-  spec.water_upper = spec.size;
-  spec.water_upper[1] = 0.5;
-  spec.dx = dx;
-  spec.fluid.sound_speed = 10.0 * std::sqrt(2.0 * 9.81 * 0.5);
-  spec.fluid.mu = 0.01;
-  spec.fluid.effects = {"pressure", "viscosity", "xsph", "density_diffusion", "gravity", "walls"};
-  auto scene = fluid::buildTankScene<D>(spec);
-  fluid::FluidParticles<D> water;
-  for (std::size_t i = 0; i < scene.fluid.size(); ++i)
-    if ((scene.fluid.r[i] - centre).norm() >= radius + 0.5 * dx)
-      water.add(scene.fluid.r[i], scene.fluid.v[i], scene.fluid.rho[i], scene.fluid.m[i]);
-  Eigen::Vector3d origin = Eigen::Vector3d::Zero();
-  origin.head<D>() = centre;
-  scene.boundary.addSurface(fluid::sampleSphere<D>(centre, radius, dx), fluid::SurfaceInfo{"body", true, true, origin});
-  auto system = std::make_unique<bodies::MultibodySystem>();
-  bodies::RigidBodySpec body;
-  body.name = "body";
-  body.mass = ratio * 1000.0 * displacedVolume<D>(radius);  // 2D: per metre of span
-  body.mobilizer = D == 2 ? bodies::Mobilizer::Planar : bodies::Mobilizer::Free;
-  for (int k = 3; k < 6; ++k) body.fixedDofs[k] = true;  // no rotation: heave against potential flow
-  body.inertiaAboutCom = Eigen::Matrix3d::Identity() * 0.4 * body.mass * radius * radius;
-  body.initial.position = origin;
-  system->addBody(body);
-  system->initialize();
-  return coupling::CoSimulation<D>(std::make_unique<fluid::FluidSimulation<D>>(scene.setup, water, scene.boundary),
-                                   std::move(system), {{0, 1}}, {release, 0.0});
-}
-
-template <int D>
 void sweep(double dx, const std::vector<double>& ratios) {
-  const double radius = 0.05, release = 0.3, added_mass_coefficient = D == 2 ? 1.0 : 0.5;
+  const double radius = 0.05, release = 0.3, added_mass_coefficient = cases::addedMassCoefficient<D>();
   fluid::Vec<D> centre = fluid::Vec<D>::Constant(D == 2 ? 0.3 : 0.15);
   centre[1] = 0.2;
   std::printf("# %s R = %.3f m (%.1f dx), dx = %.4f m, release at %.2f s, C_a = %.1f\n", D == 2 ? "cylinder" : "sphere",
               radius, radius / dx, dx, release, added_mass_coefficient);
   std::printf("# ratio  stable  mean_accel_0-20ms  potential_flow_a0  ratio_to_a0  rise_0.1s_m  particles\n");
   for (double ratio : ratios) {
-    auto co = buildScene<D>(dx, ratio, radius, centre, release);
+    auto co = cases::buildSubmergedBody<D>(dx, ratio, radius, centre, release);
     double v20 = 0.0;
     bool stable = true;
     try {
@@ -81,7 +39,7 @@ void sweep(double dx, const std::vector<double>& ratios) {
       stable = false;
       std::fprintf(stderr, "ratio %.2f: %s\n", ratio, e.what());
     }
-    const double a0 = (1.0 - ratio) / (ratio + added_mass_coefficient) * 9.81;
+    const double a0 = cases::releaseAcceleration<D>(ratio);
     std::printf("%6.2f  %6s  %17.3f  %17.3f  %11.3f  %11.4f  %9zu\n", ratio, stable ? "yes" : "NO", v20, a0, v20 / a0,
                 co.bodies().kinematics(0).position[1] - centre[1], co.fluid().fluid().size());
   }
