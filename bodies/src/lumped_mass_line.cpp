@@ -243,6 +243,8 @@ void LumpedMassLine::advance(double dt, const LineEnds& start, const LineEnds& e
   const Eigen::Vector3d fairleadVel = (end.fairlead - start.fairlead) / dt;
   const Eigen::Vector3d anchorVel = (end.anchor - start.anchor) / dt;
   std::vector<Eigen::Vector3d> acc(n + 1, Eigen::Vector3d::Zero());
+  clearExceedance();
+  const bool breakable = std::isfinite(breakingLoad());
   for (int k = 0; k < steps; ++k) {
     v_[0] = anchorVel;
     v_[n] = fairleadVel;
@@ -257,6 +259,17 @@ void LumpedMassLine::advance(double dt, const LineEnds& start, const LineEnds& e
     const double f = double(k + 1) / steps;
     r_[0] = start.anchor + f * (end.anchor - start.anchor);
     r_[n] = start.fairlead + f * (end.fairlead - start.fairlead);
+    if (breakable) {
+      // Tested every sub-step so that a break is placed within one sub-step of the
+      // crossing; the line stops there (it no longer exists past its break).
+      const LineForces ends = calcForces(end);
+      const double tension = std::max(ends.fairleadTension, ends.anchorTension);
+      if (tension > breakingLoad()) {
+        recordExceedance((k + 1) * h, tension);
+        time_ += (k + 1) * h;
+        return;
+      }
+    }
   }
   time_ += dt;
   for (int i = 0; i <= n; ++i) {

@@ -155,6 +155,7 @@ LineDiagnostics MultibodySystem::lineDiagnostics(int index, bool withShape) cons
   d.model = line.model->modelName();
   d.broken = line.broken;
   d.breakTime = line.breakTime;
+  d.breakTension = line.breakTension;
   if (!line.broken) {
     const LineForces f = m.lineForces(s, line);
     d.fairleadTension = f.fairleadTension;

@@ -181,9 +181,12 @@ void SystemCore::checkBreaks() {
     if (line.broken || !std::isfinite(line.model->breakingLoad())) continue;
     const SimTK::State& s = integ->getState();
     const LineForces f = lineForces(s, line);
-    if (std::max(f.fairleadTension, f.anchorTension) > line.model->breakingLoad()) {
+    const double tension = std::max(f.fairleadTension, f.anchorTension);
+    if (tension > line.model->breakingLoad()) {
+      // The first internal step ending above the load: the crossing lies within it.
       line.broken = true;
       line.breakTime = s.getTime();
+      line.breakTension = tension;
       if (line.forceIndex.isValid()) {
         // Disabling the force element is an Instance-stage change held in the State.
         forces.getForce(line.forceIndex).disable(integ->updAdvancedState());
@@ -235,12 +238,13 @@ void SystemCore::advanceTo(double t) {
       LineEntry& line = lines[i];
       if (!line.model->isDynamic() || line.broken) continue;
       line.model->advance(t1 - t0, start[i], endsOf(integ->getState(), line, true));
-      if (std::isfinite(line.model->breakingLoad())) {
-        const LineForces f = line.model->calcForces(endsOf(integ->getState(), line, true));
-        if (std::max(f.fairleadTension, f.anchorTension) > line.model->breakingLoad()) {
-          line.broken = true;
-          line.breakTime = t1;
-        }
+      // The line tested its load after each of its sub-steps and stopped at the first
+      // one above it; the bodies stop feeling it from this exchange (t1) on.
+      const MooringLine::Exceedance& e = line.model->lastExceedance();
+      if (std::isfinite(e.timeIntoAdvance)) {
+        line.broken = true;
+        line.breakTime = t0 + e.timeIntoAdvance;
+        line.breakTension = e.tension;
       }
     }
     exchangeDynamicLineForces();

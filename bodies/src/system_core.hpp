@@ -88,6 +88,7 @@ struct LineEntry {
   SimTK::CableSpring spring;
   bool broken = false;
   double breakTime = std::numeric_limits<double>::quiet_NaN();
+  double breakTension = std::numeric_limits<double>::quiet_NaN();
 };
 
 // All Simbody-side state. A namespace-scope struct (rather than the private Impl

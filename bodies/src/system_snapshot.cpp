@@ -24,6 +24,7 @@ SystemSnapshot MultibodySystem::snapshot() const {
     LineSnapshot l;
     l.broken = line.broken;
     l.breakTime = line.breakTime;
+    l.breakTension = line.breakTension;
     if (line.cable) l.cableDissipated = line.spring.getDissipatedEnergy(s);
     l.internalState = line.model->saveState();
     out.lines.push_back(std::move(l));
@@ -63,6 +64,7 @@ void MultibodySystem::restore(const SystemSnapshot& snap) {
     const LineSnapshot& l = snap.lines[i];
     line.broken = l.broken;
     line.breakTime = l.breakTime;
+    line.breakTension = l.breakTension;
     if (line.forceIndex.isValid()) {
       const SimTK::Force& force = m.forces.getForce(line.forceIndex);
       if (l.broken) {

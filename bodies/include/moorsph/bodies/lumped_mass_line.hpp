@@ -25,6 +25,8 @@
 // relaxed dynamically (mass-proportional damping) to the discrete static equilibrium.
 // The force on the fairlead body is the top segment's tension plus the end node's half
 // segment of net weight: the end node has no inertia of its own.
+// Breaking load: tested after every sub-step of advance(), which stops at the first
+// sub-step whose larger end tension exceeds it (MooringLine::lastExceedance()).
 
 #include <moorsph/bodies/mooring_line.hpp>
 

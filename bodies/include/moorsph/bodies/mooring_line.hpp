@@ -51,7 +51,11 @@ struct LineDiagnostics {
   Eigen::Vector3d forceOnAnchor = Eigen::Vector3d::Zero();    ///< N, ground
   bool slack = false;
   bool broken = false;
-  double breakTime = std::numeric_limits<double>::quiet_NaN();  ///< s, NaN if intact
+  /// When the line broke: the end of the first integrator step (Simbody step for the
+  /// quasi-static models, line sub-step for lumped_mass) whose end tension exceeded
+  /// the breaking load, so within one step after the crossing. NaN if intact.
+  double breakTime = std::numeric_limits<double>::quiet_NaN();  ///< s
+  double breakTension = std::numeric_limits<double>::quiet_NaN();  ///< N, larger end tension then
   std::vector<Eigen::Vector3d> shape;  ///< points from fairlead to anchor, ground, m
 };
 
@@ -97,8 +101,23 @@ class MooringLine {
   double breakingLoad() const { return breakingLoad_; }
   void setBreakingLoad(double load) { breakingLoad_ = load; }
 
+  /// Dynamic lines test their breaking load after every internal sub-step of
+  /// advance() and stop there; this is the first such exceedance of the last
+  /// advance(): time since that advance() began (s) and the larger end tension (N).
+  /// NaN time: none. The multibody system turns it into the line's break.
+  struct Exceedance {
+    double timeIntoAdvance = std::numeric_limits<double>::quiet_NaN();
+    double tension = 0.0;
+  };
+  const Exceedance& lastExceedance() const { return exceedance_; }
+
+ protected:
+  void clearExceedance() { exceedance_ = Exceedance{}; }
+  void recordExceedance(double timeIntoAdvance, double tension) { exceedance_ = {timeIntoAdvance, tension}; }
+
  private:
   double breakingLoad_ = std::numeric_limits<double>::infinity();
+  Exceedance exceedance_;
 };
 
 }  // namespace moorsph::bodies

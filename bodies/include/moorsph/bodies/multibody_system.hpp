@@ -38,6 +38,7 @@ struct SystemOptions {
 struct LineSnapshot {
   bool broken = false;
   double breakTime = std::numeric_limits<double>::quiet_NaN();
+  double breakTension = std::numeric_limits<double>::quiet_NaN();  ///< N
   double cableDissipated = 0.0;       ///< J, cable_path lines
   std::vector<double> internalState;  ///< MooringLine::saveState()
 };
