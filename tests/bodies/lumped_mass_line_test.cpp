@@ -9,7 +9,9 @@
 
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <memory>
+#include <stdexcept>
 #include <string>
 
 namespace mb = moorsph::bodies;
@@ -64,6 +66,18 @@ TEST(LumpedMassLine, RunsWithoutNaNAtItsStableStepAndFlagsBlowUp) {
     a = b;
   }
   for (const auto& r : line.nodePositions()) EXPECT_TRUE(r.allFinite());
+  // A state gone non-finite (as a blow-up would leave it) is an error naming the node
+  // and the steps, never a silent NaN in the tensions.
+  std::vector<double> state = line.saveState();
+  state[6 * 7 + 1] = std::numeric_limits<double>::quiet_NaN();  // node 7, y
+  line.restoreState(state);
+  try {
+    line.advance(0.05, a, a);
+    FAIL() << "a non-finite node must be reported";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("non-finite"), std::string::npos);
+    EXPECT_NE(std::string(e.what()).find("stable step"), std::string::npos);
+  }
 }
 
 TEST(LumpedMassLine, StaticShapeConvergesToTheCatenaryAsSegmentsIncrease) {
