@@ -66,6 +66,7 @@ void writeCheckpoint(const std::string& path, const Checkpoint& c) {
     h5::writeDoubles(file, "rho", c.rho, 1, "kg/m^3");
     h5::writeDoubles(file, "m", c.m, 1, "kg");
     h5::writeInt64(file, "id", c.id, "1");
+    if (!c.bodies.empty()) h5::writeDoubles(file, "bodies", c.bodies, 1, "SI");
     if (H5Fflush(file, H5F_SCOPE_GLOBAL) < 0) throw std::runtime_error("HDF5: flush " + tmp);
   }
   std::filesystem::rename(tmp, path);  // atomic on one file system: never a half-written checkpoint
@@ -98,6 +99,7 @@ Checkpoint readCheckpoint(const std::string& path) {
   c.rho = h5::readDoubles(file, "rho");
   c.m = h5::readDoubles(file, "m");
   c.id = h5::readInt64(file, "id");
+  if (H5Lexists(file, "bodies", H5P_DEFAULT) > 0) c.bodies = h5::readDoubles(file, "bodies");
   const std::size_t n = c.rho.size();
   if (c.r.size() != n * c.dim || c.v.size() != n * c.dim || c.m.size() != n || c.id.size() != n)
     throw std::runtime_error(path + ": arrays of inconsistent sizes");

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 #include <moorsph/fluid/box_geometry.hpp>
+#include <moorsph/io/body_geometry.hpp>
 #include <moorsph/io/mesh_sampling.hpp>
 #include <moorsph/io/primitive_shapes.hpp>
 
@@ -86,7 +87,7 @@ fluid::FluidSetup<D> makeSetup(const SceneConfig& c) {
   // The wave makers are added by addSceneEffects, not built from the list.
   s.effects.clear();
   for (const auto& e : c.effects)
-    if (e != "piston" && e != "damping_zone" && e != "forcing_region") s.effects.push_back(e);
+    if (e != "piston" && e != "damping_zone" && e != "forcing_region" && e != "bodies") s.effects.push_back(e);
   if (c.domain_given) {
     s.domain.lower = toVec<D>(c.domain.lower);
     s.domain.upper = toVec<D>(c.domain.upper);
@@ -111,6 +112,14 @@ fluid::FluidSetup<D> makeSetup(const SceneConfig& c) {
       e.upper[k] = g.mesh.upper()[k];
     }
     grow(e);
+  }
+  for (const auto& b : c.bodies) {  // a sphere around the shape's centre holding it
+    const Triple at = b.start();
+    const auto& sh = b.shape;
+    double reach = std::max({sh.radius, 0.5 * std::hypot(sh.size[0], sh.size[1], sh.size[2]), 0.5 * sh.length});
+    if (sh.kind == "mesh" || (sh.kind == "cylinder" && D == 3)) reach = std::max(reach, (sh.mesh.upper() - sh.mesh.lower()).norm());
+    reach += std::hypot(sh.centre[0], sh.centre[1], sh.centre[2]);
+    grow(BoxExtent{{at[0] - reach, at[1] - reach, at[2] - reach}, {at[0] + reach, at[1] + reach, at[2] + reach}});
   }
   const double margin = 4.0 * s.h();
   s.domain.lower = lo - fluid::Vec<D>::Constant(margin);
@@ -186,6 +195,13 @@ BuiltScene<D> buildScene(const SceneConfig& c) {
     extents.push_back(nullptr);
   }
 
+  for (const auto& b : c.bodies) {
+    const Triple at = b.start();
+    fluid::SurfaceInfo info{b.name, true, true, Eigen::Vector3d(at[0], at[1], D == 3 ? at[2] : 0.0)};
+    out.body_surfaces.push_back(scene.boundary.addSurface(sampleBodySurface<D>(b, spacing), info));
+    extents.push_back(nullptr);
+  }
+
   for (const auto& w : c.water) {
     fluid::FluidParticles<D> block;
     fluid::fillBox<D>(block, toVec<D>(w.box.lower), toVec<D>(w.box.upper), c.dx, eos, g, w.box.upper[1]);
@@ -202,6 +218,7 @@ BuiltScene<D> buildScene(const SceneConfig& c) {
       solid = solid || near_mesh.inside(block.r[i]);
       for (const auto& k : c.circles)  // 2D obstacles: inside, or within 0.45 dx of the circle
         solid = solid || std::hypot(block.r[i][0] - k.x, block.r[i][1] - k.y) < k.radius + 0.45 * c.dx;
+      for (const auto& b : c.bodies) solid = solid || insideBody<D>(b, block.r[i], 0.45 * c.dx);
       if (!solid) scene.fluid.add(block.r[i], block.v[i], block.rho[i], block.m[i]);
     }
   }

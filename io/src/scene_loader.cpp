@@ -12,7 +12,7 @@ namespace {
 using detail::MapReader;
 using detail::YamlSource;
 
-const std::vector<std::string> kUnsupportedEffects{"bodies"};
+const std::vector<std::string> kUnsupportedEffects{};
 
 /// Apply one "key.path=value" to the tree. Sequence entries are addressed by index
 /// ("geometry[1]" or "geometry.1"); missing map keys are created.
@@ -135,7 +135,7 @@ SceneConfig readScene(const YAML::Node& root, const YamlSource& source) {
   c.file = source.file;
   if (!root.IsDefined() || root.IsNull()) throw SceneError(source.file, "", "the scene file is empty");
   MapReader top(root, "", source);
-  top.rejectUnsupported({"bodies", "cables", "moorings"}, "bodies and moorings arrive with the coupling work");
+  top.rejectUnsupported({"cables"}, "mooring lines and cables are listed under 'moorings'");
   c.dim = top.integer("dim", 0);
   if (c.dim != 2 && c.dim != 3) {
     if (!top.has("dim")) top.fail("dim", "required key is missing (expected 2 or 3)");
@@ -180,6 +180,16 @@ SceneConfig readScene(const YAML::Node& root, const YamlSource& source) {
   }
   detail::readWaveMakers(top, c);
   detail::readSensors(top, c);
+  detail::readBodies(top, c);
+  // The "bodies" effect runs exactly when the scene has bodies: added to the default
+  // effect list, required in (and only in) an explicit one.
+  if (!c.bodies.empty() && !c.hasEffect("bodies")) {
+    if (root["effects"].IsDefined() && !root["effects"].IsNull())
+      top.fail("effects", "the scene has bodies but 'bodies' is not in its effects");
+    c.effects.push_back("bodies");
+  }
+  if (c.bodies.empty() && c.hasEffect("bodies"))
+    top.fail("effects", "'bodies' is listed but the scene has no 'bodies' list");
   readOutput(top, c);
   top.finish();
 
@@ -190,7 +200,7 @@ SceneConfig readScene(const YAML::Node& root, const YamlSource& source) {
 
 const std::vector<std::string>& knownEffects() {
   static const std::vector<std::string> known{"pressure", "viscosity", "xsph",         "density_diffusion", "gravity",
-                                              "walls",    "piston",    "damping_zone", "forcing_region"};
+                                              "walls",    "piston",    "damping_zone", "forcing_region", "bodies"};
   return known;
 }
 
@@ -208,6 +218,12 @@ double SceneConfig::waterHeight() const {
 double SceneConfig::cflDt() const {
   const double h = method.h_factor * dx;
   return method.cfl * h / (sound_speed + 2.0 * method.viscosity_xi * mu / (h * rho0));
+}
+
+int SceneConfig::bodyIndex(const std::string& body) const {
+  for (std::size_t k = 0; k < bodies.size(); ++k)
+    if (bodies[k].name == body) return static_cast<int>(k);
+  return -1;
 }
 
 bool SceneConfig::hasEffect(const std::string& e) const { return std::find(effects.begin(), effects.end(), e) != effects.end(); }

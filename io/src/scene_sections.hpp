@@ -10,6 +10,10 @@ void readGeometry(MapReader& top, SceneConfig& config);
 void readSensors(MapReader& top, SceneConfig& config);
 /// Reads `piston`, `damping_zones`, `forcing_region`; needs geometry and the method.
 void readWaveMakers(MapReader& top, SceneConfig& config);
+/// Reads `bodies`, `moorings` and `coupling`; needs geometry and effects.
+void readBodies(MapReader& top, SceneConfig& config);
+/// Writes `bodies`, `moorings` and `coupling` into scene.resolved.yaml (nothing without bodies).
+void writeBodySections(YAML::Emitter& e, const SceneConfig& config);
 /// Reads `method` on top of the reference preset.
 void readMethod(MapReader& top, SceneConfig& config);
 

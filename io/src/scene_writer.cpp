@@ -5,6 +5,7 @@
 #include <filesystem>
 
 #include <moorsph/io/scene_loader.hpp>
+#include "scene_sections.hpp"
 
 namespace moorsph::io {
 namespace {
@@ -167,6 +168,7 @@ std::string resolvedSceneYaml(const SceneConfig& c) {
     }
     e << YAML::EndSeq;
   }
+  detail::writeBodySections(e, c);
   e << YAML::Key << "output" << YAML::Value << YAML::BeginMap;
   e << YAML::Key << "interval" << YAML::Value << c.output.interval;
   e << YAML::Key << "particles_interval" << YAML::Value << c.output.particles_interval;

@@ -51,7 +51,7 @@ TEST(RunOutput, BadSceneIsRejectedBeforeRunning) {
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   std::string text = test::kSmallDamBreak;
-  text += "bodies: []\n";
+  text += "bodies: [{name: buoy}]\n";  // no mass, inertia, shape
   app::RunOptions o;
   o.scene = test::writeScene(dir + "/scene.yaml", text);
   o.out = dir + "/run";

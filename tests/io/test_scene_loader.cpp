@@ -144,11 +144,11 @@ TEST(SceneLoader, OutOfRangeValues) {
 
 TEST(SceneLoader, FeaturesThatDoNotExistYetAreRejected) {
   const std::string bodies = errorOf(std::string(kBase) + "bodies:\n  - {name: buoy}\n");
-  EXPECT_NE(bodies.find("s.yaml:11:3: 'bodies': not supported yet"), std::string::npos) << bodies;
+  EXPECT_NE(bodies.find("s.yaml:11:5: 'bodies[0].mass': required key is missing"), std::string::npos) << bodies;
   const std::string stl = errorOf(std::string(kBase) + "  - stl: {file: a.stl}\n");
   EXPECT_NE(stl.find("'geometry[2].stl': not supported yet"), std::string::npos) << stl;
   const std::string coupled = errorOf(std::string(kBase) + "effects: [pressure, gravity, walls, bodies]\n");
-  EXPECT_NE(coupled.find("'effects[3]': effect 'bodies' is not supported yet"), std::string::npos) << coupled;
+  EXPECT_NE(coupled.find("'bodies' is listed but the scene has no 'bodies' list"), std::string::npos) << coupled;
   const std::string typo = errorOf(std::string(kBase) + "effects: [pressure, gravty, walls]\n");
   EXPECT_NE(typo.find("did you mean 'gravity'"), std::string::npos) << typo;
 }

@@ -119,7 +119,7 @@ TEST(SceneWaveMakers, Errors) {
   std::string kind = kFlume;
   kind.replace(kind.find("type: regular"), 13, "type: sine");
   EXPECT_NE(errorOf(kind).find("'piston.signal.type': expected 'regular'"), std::string::npos) << errorOf(kind);
-  EXPECT_NE(errorOf(std::string(kFlume) + "moorings: []\n").find("not supported yet"), std::string::npos);
+  EXPECT_NE(errorOf(std::string(kFlume) + "moorings: []\n").find("mooring lines need bodies"), std::string::npos);
 }
 
 TEST(SceneWaveMakers, FlumeExampleLoads) {

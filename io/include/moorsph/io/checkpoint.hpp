@@ -8,7 +8,8 @@
 //
 // File layout (HDF5): attributes dim, time [s], last_dt [s], steps, next_output,
 // next_snapshot, scene (YAML text), reason; datasets r (N,D) [m], v (N,D) [m/s],
-// rho (N) [kg/m^3], m (N) [kg], id (N).
+// rho (N) [kg/m^3], m (N) [kg], id (N); with bodies, "bodies": the multibody state
+// (bodies::SystemSnapshot packed into numbers by the app, SI units).
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -27,6 +28,7 @@ struct Checkpoint {
   std::string reason;              ///< "end", "interval", "interrupt", "failure"
   std::vector<double> r, v, rho, m;  ///< r and v hold D values per particle
   std::vector<std::int64_t> id;
+  std::vector<double> bodies;        ///< packed multibody state; empty without bodies
   std::size_t size() const { return rho.size(); }
 };
 

@@ -1,7 +1,7 @@
 #pragma once
 // Turns a validated SceneConfig into the fluid scene: setup (properties, method,
 // effects, domain), fluid particles, boundary surfaces (tanks first, then boxes, in
-// file order), and the specs of the scene's gauges and pressure probes.
+// file order; then the piston and the bodies), and the specs of the scene's gauges and pressure probes.
 #include <string>
 #include <vector>
 #include <moorsph/fluid/fluid_simulation.hpp>
@@ -20,6 +20,9 @@ struct BuiltScene {
   std::vector<std::string> probe_names;
   std::vector<fluid::PressureProbeSpec<D>> probes;
   std::size_t piston_surface = 0;  ///< index of the piston's surface, if the scene has one
+  /// Per body of the scene (in order): its surface, movable and reaction-tracking,
+  /// with its reference point at the body's start position.
+  std::vector<std::size_t> body_surfaces;
 };
 
 /// Builds the particles. `config.dim` must equal D.

@@ -4,6 +4,7 @@
 // into the fluid scene. Vectors are stored with three entries whatever the dimension
 // (the third is unused in 2D), so one struct serves 2D and 3D scenes. SI units.
 #include <array>
+#include <limits>
 #include <string>
 #include <vector>
 #include <moorsph/fluid/method_parameters.hpp>
@@ -125,6 +126,77 @@ struct ProbeConfig {
   double interpolation_offset = 0.0;  ///< [m]; 0: 1.5 dx
 };
 
+
+/// A rigid body's surface, in the body frame (origin = the body's reference point).
+struct BodyShapeConfig {
+  std::string kind;                 ///< "sphere", "box", "cylinder" or "mesh"
+  Triple centre{0.0, 0.0, 0.0};     ///< sphere, box, cylinder: centre in the body frame [m]
+  double radius = 0.0;              ///< sphere, cylinder [m]
+  Triple size{0.0, 0.0, 0.0};       ///< box: edge lengths [m]
+  double length = 0.0;              ///< cylinder (3D) [m]
+  int axis = 2;                     ///< cylinder (3D): 0, 1, 2 for x, y, z
+  std::string file, path;           ///< mesh: as written, resolved
+  double scale = 1.0;               ///< mesh: file units -> m
+  Triple translate{0.0, 0.0, 0.0};  ///< mesh: [m] after scaling, body frame
+  TriangleMesh mesh;                ///< mesh, and cylinder in 3D: body frame [m]
+};
+
+/// A rigid body (docs/scene-reference.md "bodies"): 2D bodies move in the x-y plane
+/// (3 DOF, mass and inertia per metre of span), 3D bodies are free (6 DOF).
+struct BodyConfig {
+  std::string name;
+  double mass = 0.0;                       ///< [kg] (2D: kg/m)
+  Triple centre_of_mass{0.0, 0.0, 0.0};    ///< body frame [m]
+  /// About the centre of mass, body axes [kg m^2] (2D: only [2][2] = Izz, kg m).
+  std::array<Triple, 3> inertia{};
+  std::array<bool, 6> fixed{};             ///< x, y, z, rx, ry, rz held
+  Triple position{0.0, 0.0, 0.0};          ///< reference point in ground at rest [m]
+  Triple orientation{0.0, 0.0, 0.0};       ///< roll, pitch, yaw [rad] (2D: yaw only), body -> ground
+  Triple offset{0.0, 0.0, 0.0};            ///< initial displacement from `position` [m]
+  Triple velocity{0.0, 0.0, 0.0};          ///< initial velocity [m/s]
+  BodyShapeConfig shape;
+  SourceLocation where;
+  /// Reference point at t = 0: position + offset.
+  Triple start() const { return {position[0] + offset[0], position[1] + offset[1], position[2] + offset[2]}; }
+};
+
+/// One end of a mooring line: a point on a body (body frame) or fixed in ground.
+struct LineEndConfig {
+  std::string body;                 ///< "" = ground
+  Triple point{0.0, 0.0, 0.0};      ///< body frame, or ground [m]
+};
+
+/// A mooring line (docs/scene-reference.md "moorings"); the fields mirror
+/// bodies::MooringLineParams. NaN = not given.
+struct MooringConfig {
+  std::string name;
+  std::string model;  ///< tension_only_spring, cable_path, elastic_catenary, lumped_mass
+  LineEndConfig fairlead, anchor;
+  static constexpr double kUnset = std::numeric_limits<double>::quiet_NaN();
+  double stiffness = kUnset, rest_length = kUnset, pretension = kUnset;  ///< [N/m], [m], [N]
+  double damping = 0.0;       ///< [N s/m]
+  double dissipation = 0.0;   ///< cable_path [s/m]
+  std::vector<LineEndConfig> via_points;  ///< cable_path
+  double length = kUnset, axial_stiffness = kUnset, mass_per_length = kUnset;  ///< [m], EA [N], [kg/m]
+  double bending_stiffness = 0.0;  ///< EI [N m^2]
+  double diameter = 0.0;           ///< [m]
+  double seabed_friction = 0.0;
+  bool anchor_on_seabed = true;
+  int segments = 20;
+  double internal_damping_ratio = 1.0;
+  double cd_normal = 1.2, cd_axial = 0.0, ca_normal = 1.0, ca_axial = 0.0;
+  double time_step = 0.0, relaxation_time = 0.0;  ///< lumped_mass [s]
+  double breaking_load = std::numeric_limits<double>::infinity();  ///< [N]; infinity = unbreakable
+  SourceLocation where;
+};
+
+/// How bodies and fluid exchange loads (coupling/body_coupling.hpp).
+struct CouplingConfig {
+  double release_time = 0.0;  ///< bodies held while the fluid settles [s]
+  double ramp_time = 0.0;     ///< fluid wrench ramped in over this time after release [s]
+  double max_step = 1.0e-3;   ///< largest internal step of the body integrator [s]
+};
+
 struct OutputConfig {
   double interval = 0.01;            ///< time-series interval [s]
   double particles_interval = 0.0;   ///< particle snapshot interval [s]; 0: none
@@ -165,6 +237,9 @@ struct SceneConfig {
   ForcingRegionConfig forcing;
   std::vector<GaugeConfig> gauges;
   std::vector<ProbeConfig> probes;
+  std::vector<BodyConfig> bodies;
+  std::vector<MooringConfig> moorings;
+  CouplingConfig coupling;
   OutputConfig output;
 
   double spacing() const { return boundary_spacing > 0.0 ? boundary_spacing : dx; }
@@ -175,6 +250,8 @@ struct SceneConfig {
   /// The CFL time step the fluid will take at most [s].
   double cflDt() const;
   bool hasEffect(const std::string& e) const;
+  /// Index of the named body, or -1.
+  int bodyIndex(const std::string& name) const;
 };
 
 }  // namespace moorsph::io

@@ -1,0 +1,369 @@
+// The `bodies`, `moorings` and `coupling` sections of a scene file
+// (docs/scene-reference.md). Checks what can be checked without building the
+// multibody system: sizes against dx, positive mass, a physical inertia tensor,
+// known model words and each model's required parameters, distinct line ends.
+#include <Eigen/Eigenvalues>
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <limits>
+#include <moorsph/io/mesh_sampling.hpp>
+#include <moorsph/io/primitive_shapes.hpp>
+#include "scene_sections.hpp"
+
+namespace moorsph::io::detail {
+namespace {
+
+const double kNaN = std::numeric_limits<double>::quiet_NaN();
+const double kPi = 3.14159265358979323846;
+
+const std::vector<std::string>& modelWords() {
+  static const std::vector<std::string> words{"tension_only_spring", "cable_path", "elastic_catenary", "lumped_mass"};
+  return words;
+}
+
+/// An optional number that must be > 0 (>= 0 with allow_zero) when given; NaN when absent.
+double optionalPositive(MapReader& m, const std::string& key, const std::string& what, bool allow_zero = false) {
+  if (!m.has(key)) {
+    m.child(key);
+    return kNaN;
+  }
+  return m.positive(key, 0.0, what, allow_zero);
+}
+
+void failSmall(MapReader& m, const std::string& key, const std::string& what, double size, double least, double dx) {
+  char msg[240];
+  std::snprintf(msg, sizeof msg,
+                "the body's %s is %g m, finer than the resolution allows (at least %g m at dx = %g m): the body "
+                "would be smaller than a few particles; refine resolution.dx or enlarge the body",
+                what.c_str(), size, least, dx);
+  m.fail(key, msg);
+}
+
+void readSphereOrCylinder(MapReader& m, const std::string& kind, BodyShapeConfig& s, const SceneConfig& c) {
+  s.centre = toTriple(m.vector("centre", c.dim, std::vector<double>(c.dim, 0.0)));
+  s.radius = m.positive("radius", 0.0, "radius [m]");
+  if (s.radius < c.dx * (1.0 - 1e-9)) failSmall(m, "radius", "radius", s.radius, c.dx, c.dx);
+  if (kind == "cylinder" && c.dim == 3) {
+    s.length = m.positive("length", 0.0, "length along the axis [m]");
+    if (s.length < 2.0 * c.dx * (1.0 - 1e-9)) failSmall(m, "length", "length", s.length, 2.0 * c.dx, c.dx);
+    const std::string axis = m.text("axis", "z");
+    if (axis != "x" && axis != "y" && axis != "z") m.fail("axis", "expected x, y or z, got '" + axis + "'");
+    s.axis = axis[0] - 'x';
+    const Eigen::Vector3d at(s.centre[0], s.centre[1], s.centre[2]);
+    s.mesh = makeCylinderMesh(at, s.radius, s.length, s.axis, 0.5 * c.spacing());
+  }
+}
+
+void readBox(MapReader& m, BodyShapeConfig& s, const SceneConfig& c) {
+  s.centre = toTriple(m.vector("centre", c.dim, std::vector<double>(c.dim, 0.0)));
+  s.size = toTriple(m.vector("size", c.dim));
+  for (int k = 0; k < c.dim; ++k) {
+    if (!(s.size[k] > 0.0)) m.fail("size", "expected edge lengths > 0 [m]");
+    if (s.size[k] < 2.0 * c.dx * (1.0 - 1e-9)) failSmall(m, "size", std::string("edge along ") + "xyz"[k], s.size[k], 2.0 * c.dx, c.dx);
+  }
+}
+
+void readMeshShape(MapReader& m, BodyShapeConfig& s, const SceneConfig& c) {
+  if (c.dim != 3) m.fail("file", "a mesh body is 3D only (dim: 3); in 2D use a box, cylinder or sphere");
+  s.file = m.requiredText("file");
+  const std::filesystem::path file(s.file);
+  s.path = file.is_absolute() ? s.file : (std::filesystem::path(c.file).parent_path() / file).string();
+  s.scale = m.positive("scale", 1.0, "factor from file units to metres");
+  s.translate = toTriple(m.vector("translate", 3, {0.0, 0.0, 0.0}));
+  try {
+    s.mesh = readMesh(s.path);
+  } catch (const std::exception& e) {
+    m.fail("file", std::string("cannot use the mesh: ") + e.what());
+  }
+  for (auto& v : s.mesh.vertices) v = s.scale * v + Eigen::Vector3d(s.translate[0], s.translate[1], s.translate[2]);
+  const Eigen::Vector3d size = s.mesh.upper() - s.mesh.lower();
+  if (std::abs(s.mesh.signedVolume()) < 1e-12 * std::pow(size.maxCoeff(), 3))
+    m.fail("file", "the mesh encloses no volume: a body's mesh must be a closed surface");
+  for (int k = 0; k < 3; ++k)
+    if (size[k] < 2.0 * c.dx * (1.0 - 1e-9)) failSmall(m, "file", std::string("extent along ") + "xyz"[k], size[k], 2.0 * c.dx, c.dx);
+}
+
+void readShape(MapReader& b, BodyConfig& body, const SceneConfig& c) {
+  if (!b.has("shape")) b.fail("shape", "required key is missing (expected one of sphere:, box:, cylinder:, mesh: with its keys)");
+  const YAML::Node node = b.child("shape");
+  const std::string path = b.childPath("shape");
+  if (!node.IsMap() || node.size() != 1)
+    b.source().fail(node, path, "expected one of 'sphere:', 'box:', 'cylinder:', 'mesh:' followed by its keys");
+  MapReader one(node, path, b.source());
+  const std::string kind = node.begin()->first.as<std::string>();
+  for (const char* k : {"sphere", "box", "cylinder", "mesh"})
+    if (kind != k) one.child(k);
+  if (kind != "sphere" && kind != "box" && kind != "cylinder" && kind != "mesh") one.finish();  // unknown word: hint
+  MapReader m(one.child(kind), path + "." + kind, b.source());
+  body.shape.kind = kind;
+  if (kind == "box") readBox(m, body.shape, c);
+  else if (kind == "mesh") readMeshShape(m, body.shape, c);
+  else readSphereOrCylinder(m, kind, body.shape, c);
+  m.finish();
+  one.finish();
+}
+
+/// 3D: [Ixx, Iyy, Izz] or [Ixx, Iyy, Izz, Ixy, Ixz, Iyz]; 2D: Izz (a number).
+void readInertia(MapReader& b, BodyConfig& body, const SceneConfig& c) {
+  if (!b.has("inertia"))
+    b.fail("inertia", c.dim == 2 ? "required key is missing (expected Izz about the centre of mass [kg m^2/m])"
+                                 : "required key is missing (expected [Ixx, Iyy, Izz] or [Ixx, Iyy, Izz, Ixy, Ixz, Iyz] "
+                                   "about the centre of mass [kg m^2])");
+  Eigen::Matrix3d I = Eigen::Matrix3d::Zero();
+  if (c.dim == 2) {
+    const double izz = b.positive("inertia", 0.0, "moment of inertia about the centre of mass, z axis [kg m^2/m]");
+    // Planar bodies: Simbody still needs a full, physical tensor; x and y moments
+    // play no part in the planar motion.
+    I.diagonal() << izz / 2.0, izz / 2.0, izz;
+  } else {
+    const YAML::Node n = b.child("inertia");
+    const std::string expected = "expected [Ixx, Iyy, Izz] or [Ixx, Iyy, Izz, Ixy, Ixz, Iyz] [kg m^2]";
+    if (!n.IsSequence() || (n.size() != 3 && n.size() != 6)) b.fail("inertia", expected + ", got " + describeNode(n));
+    const std::vector<double> v = b.vector("inertia", n.size());
+    I.diagonal() << v[0], v[1], v[2];
+    if (v.size() == 6) {
+      I(0, 1) = I(1, 0) = v[3];
+      I(0, 2) = I(2, 0) = v[4];
+      I(1, 2) = I(2, 1) = v[5];
+    }
+  }
+  // A rigid body's inertia tensor is positive definite and its principal moments
+  // satisfy the triangle inequality I1 + I2 >= I3 (each is a sum of two second moments).
+  const Eigen::Vector3d p = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(I).eigenvalues();
+  if (!(p.minCoeff() > 0.0)) {
+    char msg[200];
+    std::snprintf(msg, sizeof msg, "the inertia tensor is not positive definite (principal moments %g, %g, %g kg m^2)",
+                  p[0], p[1], p[2]);
+    b.fail("inertia", msg);
+  }
+  if (p[0] + p[1] < p[2] * (1.0 - 1e-9)) {
+    char msg[200];
+    std::snprintf(msg, sizeof msg,
+                  "no rigid body has these principal moments (%g + %g < %g kg m^2: they must satisfy I1 + I2 >= I3)",
+                  p[0], p[1], p[2]);
+    b.fail("inertia", msg);
+  }
+  for (int r = 0; r < 3; ++r)
+    for (int k = 0; k < 3; ++k) body.inertia[r][k] = I(r, k);
+}
+
+void readFixed(MapReader& b, BodyConfig& body, const SceneConfig& c) {
+  const std::vector<std::string> words = c.dim == 2 ? std::vector<std::string>{"x", "y", "rz"}
+                                                    : std::vector<std::string>{"x", "y", "z", "rx", "ry", "rz"};
+  const std::vector<std::string> all{"x", "y", "z", "rx", "ry", "rz"};
+  for (const auto& w : b.textList("fixed", {})) {
+    if (std::find(words.begin(), words.end(), w) == words.end()) {
+      std::string list;
+      for (const auto& k : words) list += (list.empty() ? "" : ", ") + k;
+      b.fail("fixed", "unknown degree of freedom '" + w + "'; expected among " + list);
+    }
+    body.fixed[std::find(all.begin(), all.end(), w) - all.begin()] = true;
+  }
+}
+
+bool surfaceNameTaken(const SceneConfig& c, const std::string& name) {
+  for (const auto& t : c.tanks) if (t.name == name) return true;
+  for (const auto& b : c.boxes) if (b.name == name) return true;
+  for (const auto& m : c.meshes) if (m.name == name) return true;
+  for (const auto& k : c.circles) if (k.name == name) return true;
+  return c.bodyIndex(name) >= 0;
+}
+
+BodyConfig readBody(MapReader& b, const SceneConfig& c, std::size_t index) {
+  BodyConfig body;
+  body.name = b.text("name", "body" + std::to_string(index));
+  if (surfaceNameTaken(c, body.name)) b.fail("name", "another body or surface is already named '" + body.name + "'");
+  body.mass = b.requiredNumber("mass");
+  if (!(body.mass > 0.0))
+    b.fail("mass", std::string("expected a mass > 0 [") + (c.dim == 2 ? "kg per metre of span" : "kg") + "], got " +
+                       describeNode(b.node()["mass"]));
+  body.centre_of_mass = toTriple(b.vector("centre_of_mass", c.dim, std::vector<double>(c.dim, 0.0)));
+  readInertia(b, body, c);
+  readFixed(b, body, c);
+  body.position = toTriple(b.vector("position", c.dim));
+  if (c.dim == 2) {
+    body.orientation[2] = b.number("orientation_deg", 0.0) * kPi / 180.0;
+  } else {
+    const auto o = b.vector("orientation_deg", 3, {0.0, 0.0, 0.0});
+    for (int k = 0; k < 3; ++k) body.orientation[k] = o[k] * kPi / 180.0;
+  }
+  body.offset = toTriple(b.vector("offset", c.dim, std::vector<double>(c.dim, 0.0)));
+  body.velocity = toTriple(b.vector("velocity", c.dim, std::vector<double>(c.dim, 0.0)));
+  readShape(b, body, c);
+  body.where.text = b.source().locate(b.node(), b.path());
+  // The body must start in the water's container (or the domain).
+  const Triple s = body.start();
+  bool inside = c.tanks.empty() && !c.domain_given;
+  auto within = [&](const BoxExtent& e) {
+    for (int k = 0; k < c.dim; ++k)
+      if (s[k] < e.lower[k] || s[k] > e.upper[k]) return false;
+    return true;
+  };
+  for (const auto& t : c.tanks) inside = inside || within(t.box);
+  if (c.domain_given) inside = inside || within(c.domain);
+  if (!inside) b.fail("position", "the body's reference point (position + offset) lies outside every tank and the domain");
+  return body;
+}
+
+LineEndConfig readEnd(MapReader& line, const std::string& key, const SceneConfig& c, bool body_required) {
+  if (!line.has(key))
+    line.fail(key, std::string("required key is missing (expected {") + (body_required ? "body: NAME, " : "") +
+                       "point: [...]})");
+  MapReader m(line.child(key), line.childPath(key), line.source());
+  LineEndConfig end;
+  end.body = body_required ? m.requiredText("body") : m.text("body", "");
+  if (!end.body.empty() && c.bodyIndex(end.body) < 0) {
+    std::vector<std::string> names;
+    for (const auto& b : c.bodies) names.push_back(b.name);
+    const std::string guess = closestWord(end.body, names);
+    m.fail("body", "no body is named '" + end.body + "'" + (guess.empty() ? "" : " (did you mean '" + guess + "'?)"));
+  }
+  end.point = toTriple(m.vector("point", c.dim));
+  m.finish();
+  return end;
+}
+
+/// Ground position of a line end in the scene's initial pose.
+Eigen::Vector3d groundPoint(const LineEndConfig& e, const SceneConfig& c) {
+  const Eigen::Vector3d p(e.point[0], e.point[1], e.point[2]);
+  if (e.body.empty()) return p;
+  const BodyConfig& b = c.bodies[c.bodyIndex(e.body)];
+  const Eigen::Quaterniond q = Eigen::AngleAxisd(b.orientation[2], Eigen::Vector3d::UnitZ()) *
+                               Eigen::AngleAxisd(b.orientation[1], Eigen::Vector3d::UnitY()) *
+                               Eigen::AngleAxisd(b.orientation[0], Eigen::Vector3d::UnitX());
+  const Triple s = b.start();
+  return Eigen::Vector3d(s[0], s[1], s[2]) + q * p;
+}
+
+void readLineParameters(MapReader& m, MooringConfig& l) {
+  l.stiffness = optionalPositive(m, "stiffness", "spring stiffness k [N/m]");
+  l.rest_length = optionalPositive(m, "rest_length", "unstretched length L0 [m]");
+  l.pretension = optionalPositive(m, "pretension", "tension at the rest pose [N]", true);
+  l.damping = m.positive("damping", 0.0, "dashpot coefficient [N s/m]", true);
+  l.dissipation = m.positive("dissipation", 0.0, "cable_path dissipation coefficient [s/m]", true);
+  l.length = optionalPositive(m, "length", "unstretched line length [m]");
+  l.axial_stiffness = optionalPositive(m, "axial_stiffness", "EA [N]");
+  l.mass_per_length = optionalPositive(m, "mass_per_length", "mass per unit length in air [kg/m]");
+  l.bending_stiffness = m.positive("bending_stiffness", 0.0, "EI [N m^2]", true);
+  l.diameter = m.positive("diameter", 0.0, "volumetric diameter [m]", true);
+  l.seabed_friction = m.positive("seabed_friction", 0.0, "seabed friction coefficient [-]", true);
+  l.anchor_on_seabed = m.boolean("anchor_on_seabed", true);
+  l.segments = m.integer("segments", l.segments);
+  if (l.segments < 1) m.fail("segments", "expected at least 1 segment");
+  l.internal_damping_ratio = m.positive("internal_damping_ratio", 1.0, "axial damping ratio [-]", true);
+  l.cd_normal = m.positive("cd_normal", l.cd_normal, "normal drag coefficient [-]", true);
+  l.cd_axial = m.positive("cd_axial", l.cd_axial, "axial drag coefficient [-]", true);
+  l.ca_normal = m.positive("ca_normal", l.ca_normal, "normal added-mass coefficient [-]", true);
+  l.ca_axial = m.positive("ca_axial", l.ca_axial, "axial added-mass coefficient [-]", true);
+  l.time_step = m.positive("time_step", 0.0, "lumped_mass internal step [s], 0 for automatic", true);
+  l.relaxation_time = m.positive("relaxation_time", 0.0, "lumped_mass static relaxation before the run [s]", true);
+  if (m.has("breaking_load")) l.breaking_load = m.positive("breaking_load", 0.0, "tension at which the line breaks [N]");
+  else m.child("breaking_load");
+}
+
+/// Each model's required parameters (mooring_factory.hpp): a spring needs k and a
+/// rest length (or a pretension), or the line description EA and L they derive from.
+void checkModelParameters(MapReader& m, const MooringConfig& l) {
+  const bool line = !std::isnan(l.length) && !std::isnan(l.axial_stiffness);
+  if (l.model == "tension_only_spring" || l.model == "cable_path") {
+    if (std::isnan(l.stiffness) && !line)
+      m.fail("stiffness", "required key is missing for model " + l.model + " (expected k [N/m], or length and axial_stiffness)");
+    if (!std::isnan(l.rest_length) && !std::isnan(l.pretension))
+      m.fail("pretension", "give rest_length or pretension, not both (the pretension sets the rest length)");
+    if (std::isnan(l.rest_length) && std::isnan(l.pretension) && std::isnan(l.length))
+      m.fail("rest_length", "required key is missing for model " + l.model + " (expected rest_length [m] or pretension [N])");
+  } else {
+    for (const char* key : {"length", "axial_stiffness", "mass_per_length"}) {
+      const double v = std::string(key) == "length" ? l.length : std::string(key) == "axial_stiffness" ? l.axial_stiffness : l.mass_per_length;
+      if (std::isnan(v))
+        m.fail(key, "required key is missing for model " + l.model + " (" +
+                        (std::string(key) == "length" ? "unstretched length [m]" : std::string(key) == "axial_stiffness" ? "EA [N]" : "mass per length in air [kg/m]") +
+                        ")");
+    }
+  }
+}
+
+MooringConfig readLine(MapReader& m, const SceneConfig& c, std::size_t index) {
+  MooringConfig l;
+  l.name = m.text("name", "line" + std::to_string(index));
+  for (const auto& other : c.moorings)
+    if (other.name == l.name) m.fail("name", "another line is already named '" + l.name + "'");
+  l.model = m.requiredText("model");
+  if (std::find(modelWords().begin(), modelWords().end(), l.model) == modelWords().end()) {
+    const std::string guess = closestWord(l.model, modelWords());
+    m.fail("model", "unknown mooring model '" + l.model + "'" + (guess.empty() ? "" : " (did you mean '" + guess + "'?)") +
+                        "; known: tension_only_spring, cable_path, elastic_catenary, lumped_mass");
+  }
+  l.fairlead = readEnd(m, "fairlead", c, true);
+  l.anchor = readEnd(m, "anchor", c, false);
+  if (l.anchor.body == l.fairlead.body) m.fail("anchor", "the anchor is on the fairlead's own body: the line would do nothing");
+  const double span = (groundPoint(l.fairlead, c) - groundPoint(l.anchor, c)).norm();
+  if (span < 1e-6) m.fail("anchor", "the anchor coincides with the fairlead (the line has no direction)");
+  const YAML::Node via = m.child("via_points");
+  if (via.IsDefined() && !via.IsNull()) {
+    if (!via.IsSequence()) m.fail("via_points", "expected a list of {body: NAME (optional), point: [...]} [m]");
+    for (std::size_t k = 0; k < via.size(); ++k) {
+      MapReader p(via[k], m.childPath("via_points") + "." + std::to_string(k), m.source());
+      LineEndConfig e;
+      e.body = p.text("body", "");
+      if (!e.body.empty() && c.bodyIndex(e.body) < 0) p.fail("body", "no body is named '" + e.body + "'");
+      e.point = toTriple(p.vector("point", c.dim));
+      p.finish();
+      l.via_points.push_back(e);
+    }
+  }
+  readLineParameters(m, l);
+  checkModelParameters(m, l);
+  if (!std::isnan(l.stiffness) && !std::isnan(l.pretension) && l.model == "tension_only_spring") {
+    // rest length = span - T/k must stay positive.
+    if (l.pretension / l.stiffness >= span) {
+      char msg[200];
+      std::snprintf(msg, sizeof msg, "a pretension of %g N stretches the %g m line by %g m: the rest length would be <= 0",
+                    l.pretension, span, l.pretension / l.stiffness);
+      m.fail("pretension", msg);
+    }
+  }
+  l.where.text = m.source().locate(m.node(), m.path());
+  m.finish();
+  return l;
+}
+
+}  // namespace
+
+void readBodies(MapReader& top, SceneConfig& c) {
+  const YAML::Node list = top.child("bodies");
+  if (list.IsDefined() && !list.IsNull()) {
+    if (!list.IsSequence()) top.fail("bodies", "expected a list of rigid bodies, got " + describeNode(list));
+    for (std::size_t i = 0; i < list.size(); ++i) {
+      MapReader b(list[i], "bodies[" + std::to_string(i) + "]", top.source());
+      c.bodies.push_back(readBody(b, c, i));
+      b.finish();
+    }
+  }
+  const YAML::Node lines = top.child("moorings");
+  if (lines.IsDefined() && !lines.IsNull()) {
+    if (!lines.IsSequence()) top.fail("moorings", "expected a list of mooring lines, got " + describeNode(lines));
+    if (c.bodies.empty()) top.fail("moorings", "mooring lines need bodies (the 'bodies' list is empty)");
+    for (std::size_t i = 0; i < lines.size(); ++i) {
+      MapReader m(lines[i], "moorings[" + std::to_string(i) + "]", top.source());
+      c.moorings.push_back(readLine(m, c, i));
+    }
+  }
+  if (top.has("coupling")) {
+    MapReader m(top.child("coupling"), "coupling", top.source());
+    c.coupling.release_time = m.positive("release_time", 0.0, "bodies held while the fluid settles [s]", true);
+    c.coupling.ramp_time = m.positive("ramp_time", 0.0, "fluid load ramped in after release [s]", true);
+    c.coupling.max_step = m.positive("max_body_step", c.coupling.max_step, "largest internal step of the body integrator [s]");
+    if (c.bodies.empty()) top.fail("coupling", "the scene has no bodies to couple");
+    m.finish();
+  } else {
+    top.child("coupling");
+  }
+  if (!c.bodies.empty() && !c.hasEffect("walls"))
+    top.fail("effects", "the scene has bodies but 'walls' is not in its effects (bodies are boundary surfaces)");
+}
+
+}  // namespace moorsph::io::detail
