@@ -6,11 +6,15 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <memory>
 #include <string>
 #include <moorsph/fluid/waves/piston_signal.hpp>
 #include <moorsph/io/scene_builder.hpp>
 #include <moorsph/io/scene_loader.hpp>
 #include "run_scene.hpp"
+#if MOORSPH_HAS_BODIES
+#include "scene_bodies.hpp"
+#endif
 
 namespace moorsph::app {
 namespace {
@@ -27,8 +31,24 @@ template <int D>
 int checkDim(const io::SceneConfig& c) {
   const double rss0 = residentBytes();
   auto built = io::buildScene<D>(c);
-  fluid::FluidSimulation<D> sim(built.scene.setup, built.scene.fluid, built.scene.boundary);
-  io::addSceneEffects(sim, c, built);
+  std::unique_ptr<fluid::FluidSimulation<D>> plain;
+  std::vector<std::string> body_lines;
+#if MOORSPH_HAS_BODIES
+  std::unique_ptr<coupling::CoSimulation<D>> co;
+  if (!c.bodies.empty()) {
+    co = makeCoSimulation<D>(c, built, built.scene.fluid, {});
+    body_lines = describeBodies(c, co->bodies());
+  }
+  fluid::FluidSimulation<D>* coupled = co ? &co->updFluid() : nullptr;
+#else
+  if (!c.bodies.empty()) throw std::invalid_argument("this moorsph was built without bodies (MOORSPH_WITH_BODIES=OFF)");
+  fluid::FluidSimulation<D>* coupled = nullptr;
+#endif
+  if (!coupled) {
+    plain = std::make_unique<fluid::FluidSimulation<D>>(built.scene.setup, built.scene.fluid, built.scene.boundary);
+    io::addSceneEffects(*plain, c, built);
+  }
+  fluid::FluidSimulation<D>& sim = coupled ? *coupled : *plain;
   const std::size_t nb = sim.walls() ? sim.walls()->particles().size() : 0;
   std::printf("scene %s: %dD '%s', valid\n", c.file.c_str(), D, c.name.c_str());
   std::printf("  particles: %zu fluid, %zu boundary\n", sim.fluid().size(), nb);
@@ -43,6 +63,12 @@ int checkDim(const io::SceneConfig& c) {
   for (const auto& e : sim.effectNames()) effects += " " + e;
   std::printf("  effects:%s (method %s)\n", effects.c_str(), c.method.name.c_str());
   std::printf("  sensors: %zu wave gauges, %zu pressure probes\n", c.gauges.size(), c.probes.size());
+  for (std::size_t k = 0; k < built.body_surfaces.size(); ++k) {
+    std::size_t n = 0;
+    for (auto s : sim.walls()->particles().surface) n += s == built.body_surfaces[k] ? 1 : 0;
+    std::printf("  %s; %zu boundary particles on its surface\n", body_lines[k].c_str(), n);
+  }
+  for (std::size_t k = built.body_surfaces.size(); k < body_lines.size(); ++k) std::printf("  %s\n", body_lines[k].c_str());
   if (c.piston.present && c.piston.signal == "regular") {
     // What resolution the waves get: particles per wavelength and per wave height.
     const auto& p = c.piston;

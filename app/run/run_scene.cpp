@@ -17,6 +17,9 @@
 #include <moorsph/io/scene_loader.hpp>
 #include "progress.hpp"
 #include "scene_series.hpp"
+#if MOORSPH_HAS_BODIES
+#include "scene_bodies.hpp"
+#endif
 
 namespace moorsph::app {
 namespace {
@@ -51,6 +54,17 @@ std::string changedParticleSetKey(const std::string& saved, const std::string& c
       ea << pa[key];
       eb << pb[key];
       if (std::string(ea.c_str()) != eb.c_str()) return std::string("piston.") + key;
+    }
+  // A body's surface and start pose define boundary particles and where water starts.
+  const YAML::Node ba = a["bodies"], bb = b["bodies"];
+  const std::size_t na = ba.IsDefined() ? ba.size() : 0, nb = bb.IsDefined() ? bb.size() : 0;
+  if (na != nb) return "bodies";
+  for (std::size_t k = 0; k < na; ++k)
+    for (const char* key : {"shape", "position", "offset", "orientation_deg"}) {
+      YAML::Emitter ea, eb;
+      ea << ba[k][key];
+      eb << bb[k][key];
+      if (std::string(ea.c_str()) != eb.c_str()) return "bodies." + std::to_string(k) + "." + key;
     }
   return "";
 }
@@ -89,8 +103,26 @@ int runDim(const io::SceneConfig& config, const RunOptions& o, const std::string
                            "differs from the scene the checkpoint was written for; a restart may change only what "
                            "does not alter the particle set (end time, output, method options, sensors)");
   }
-  fluid::FluidSimulation<D> sim(built.scene.setup, particles, built.scene.boundary);
-  io::addSceneEffects(sim, config, built);
+  // With bodies the fluid runs inside a co-simulation (coupling/), without as is.
+  std::unique_ptr<fluid::FluidSimulation<D>> plain;
+#if MOORSPH_HAS_BODIES
+  std::unique_ptr<coupling::CoSimulation<D>> co;
+  if (!config.bodies.empty()) {
+    if (restarting && restored.bodies.empty())
+      throw io::SceneError(o.restart, "bodies", "the checkpoint holds no bodies' state: it belongs to a scene without bodies");
+    co = makeCoSimulation<D>(config, built, particles, restarting ? restored.bodies : std::vector<double>{});
+  }
+  fluid::FluidSimulation<D>* coupled = co ? &co->updFluid() : nullptr;
+#else
+  if (!config.bodies.empty())
+    throw io::SceneError(config.file, "bodies", "this moorsph was built without bodies (MOORSPH_WITH_BODIES=OFF)");
+  fluid::FluidSimulation<D>* coupled = nullptr;
+#endif
+  if (!coupled) {
+    plain = std::make_unique<fluid::FluidSimulation<D>>(built.scene.setup, particles, built.scene.boundary);
+    io::addSceneEffects(*plain, config, built);
+  }
+  fluid::FluidSimulation<D>& sim = coupled ? *coupled : *plain;
   if (restarting) sim.restoreClock(restored.time, static_cast<std::size_t>(restored.steps), restored.last_dt);
 
   log.line("moorsph run " + config.file + " -> " + fs::absolute(out).string());
@@ -102,12 +134,19 @@ int runDim(const io::SceneConfig& config, const RunOptions& o, const std::string
   std::string effects;
   for (const auto& e : sim.effectNames()) effects += " " + e;
   log.line("  effects:" + effects + "  (method " + config.method.name + ")");
+#if MOORSPH_HAS_BODIES
+  if (co)
+    for (const auto& line : describeBodies(config, co->bodies())) log.line("  " + line);
+#endif
   if (restarting) log.line(format("  restarted from t = %.6g s, step %.0f", restored.time, static_cast<double>(restored.steps)) + " (" + o.restart + ")");
 
   io::SeriesFile series(out + "/series.h5");
   cases::RunRecorder<D> recorder(sim, series, config.output.interval);
   SceneSeries<D> sensors(sim, built);
   sensors.attach(recorder);
+#if MOORSPH_HAS_BODIES
+  if (co) attachBodySeries(recorder, *co, config);
+#endif
 
   std::unique_ptr<io::ParticleFile> particle_file;
   long long next_snapshot = restarting ? restored.next_snapshot : 0;
@@ -121,6 +160,9 @@ int runDim(const io::SceneConfig& config, const RunOptions& o, const std::string
     c.reason = reason;
     c.next_output = recorder.nextOutputIndex();
     c.next_snapshot = next_snapshot;
+#if MOORSPH_HAS_BODIES
+    if (co) c.bodies = packSnapshot(co->bodies().snapshot());
+#endif
     io::writeCheckpoint(path, c);
     last_checkpoint = Clock::now();
     progress.clear();

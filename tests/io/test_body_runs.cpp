@@ -1,0 +1,207 @@
+// `moorsph run` and `moorsph check` with bodies: a scene with a rigid body runs as a
+// fluid-body co-simulation and writes the body's kinematics, the fluid wrench, line
+// tensions, the energy ledger and the coupling timers; a stop-and-restart continues
+// bit-identically (fluid and bodies); a restart may change a body's mass and a line's
+// stiffness.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+#include <moorsph/io/checkpoint.hpp>
+#include <moorsph/io/csv_export.hpp>
+#include "run/run_scene.hpp"
+#include "run/scene_bodies.hpp"
+#include "scene_text.hpp"
+
+using namespace moorsph;
+
+namespace {
+
+// The 2D floating box of tests/coupling at its Archimedes draught (m / (rho w) =
+// 0.05 m: centre at the still level 0.2 m), coarse, tethered to the floor by a
+// slack spring so the line series exist.
+const char* const kBox = R"(dim: 2
+name: box
+end_time: 0.2
+resolution: {dx: 0.02}
+fluid: {viscosity: 0.05, sound_speed: 20}
+geometry:
+  - tank: {name: tank, lower: [0, 0], upper: [0.8, 0.4]}
+  - water: {lower: [0, 0], upper: [0.8, 0.2]}
+bodies:
+  - name: box
+    mass: 10
+    inertia: 0.0416667
+    position: [0.4, 0.2]
+    shape: {box: {size: [0.2, 0.1]}}
+moorings:
+  - {name: tether, model: tension_only_spring, fairlead: {body: box, point: [0, -0.05]}, anchor: {point: [0.4, 0.0]},
+     stiffness: 100, rest_length: 0.2}
+coupling: {release_time: 0.05}
+output: {interval: 0.01, checkpoint_minutes: 0}
+)";
+
+std::string freshDir(const std::string& name) {
+  const std::string dir = testing::TempDir() + name;
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  return dir;
+}
+
+app::RunOptions options(const std::string& scene, const std::string& out, double end) {
+  app::RunOptions o;
+  o.scene = scene;
+  o.out = out;
+  o.end = end;
+  o.threads = 1;
+  return o;
+}
+
+/// The values of csv/<series>.csv (time, value per line).
+std::vector<double> column(const std::string& dir, const std::string& series) {
+  std::ifstream in(dir + "/csv/" + series + ".csv");
+  std::string line;
+  std::getline(in, line);
+  std::vector<double> out;
+  while (std::getline(in, line)) out.push_back(std::stod(line.substr(line.find(',') + 1)));
+  return out;
+}
+
+/// Equal bit for bit (NaN equals NaN: an intact line's break time).
+bool identical(const std::vector<double>& a, const std::vector<double>& b) {
+  if (a.size() != b.size()) return false;
+  for (std::size_t k = 0; k < a.size(); ++k)
+    if (!(a[k] == b[k] || (std::isnan(a[k]) && std::isnan(b[k])))) return false;
+  return true;
+}
+
+std::string header(const std::string& dir, const std::string& file) {
+  std::ifstream in(dir + "/csv/" + file + ".csv");
+  std::string line;
+  std::getline(in, line);
+  return line;
+}
+
+std::string slurp(const std::string& path) {
+  std::ifstream in(path);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+}  // namespace
+
+TEST(BodyRuns, FloatingBoxRunsAndRecordsBodyLineLedgerAndTimers) {
+  const std::string dir = freshDir("moorsph_body_run");
+  const std::string scene = test::writeScene(dir + "/scene.yaml", kBox);
+  ASSERT_EQ(app::runScene(options(scene, dir + "/run", 0.2)), app::kSuccess);
+  ASSERT_GT(io::exportSeriesCsv(dir + "/run").size(), 0u);
+  EXPECT_EQ(header(dir + "/run", "body_box.angle"), "time [s],angle [rad]");
+  EXPECT_EQ(header(dir + "/run", "velocity_box.wz"), "time [s],wz [rad/s]");
+  EXPECT_EQ(header(dir + "/run", "wrench_box.Fy"), "time [s],Fy [N/m]");
+  EXPECT_EQ(header(dir + "/run", "wrench_box.Mz"), "time [s],Mz [N m/m]");
+  EXPECT_EQ(header(dir + "/run", "line_tether.fairlead_tension"), "time [s],fairlead_tension [N]");
+  EXPECT_EQ(header(dir + "/run", "line_tether.broken"), "time [s],broken [1]");
+  EXPECT_EQ(header(dir + "/run", "ledger.work_by_fluid_on_bodies"), "time [s],work_by_fluid_on_bodies [J/m]");
+  EXPECT_EQ(header(dir + "/run", "coupling_timing.exchange"), "time [s],exchange [s]");
+  // Held until 0.05 s: the box does not move; afterwards the fluid carries it.
+  const auto y = column(dir + "/run", "body_box.y");
+  ASSERT_EQ(y.size(), 21u);
+  EXPECT_EQ(y[0], 0.2);
+  EXPECT_EQ(y[4], 0.2);
+  // Archimedes: at its draught the water holds the box up with m g = 98.1 N/m; the
+  // coarse start-up transient allows 15% on the mean over the released outputs.
+  const auto fy = column(dir + "/run", "wrench_box.Fy");
+  double mean = 0.0;
+  for (std::size_t k = 6; k < fy.size(); ++k) mean += fy[k] / static_cast<double>(fy.size() - 6);
+  EXPECT_NEAR(mean, 10 * 9.81, 0.15 * 10 * 9.81);
+  // The spring is slack (span 0.15 m < rest length 0.2 m): no tension, slack flag set.
+  EXPECT_EQ(column(dir + "/run", "line_tether.fairlead_tension").back(), 0.0);
+  EXPECT_EQ(column(dir + "/run", "line_tether.slack").back(), 1.0);
+  EXPECT_GT(column(dir + "/run", "coupling_timing.bodies").back(), 0.0);
+  const std::string log = slurp(dir + "/run/log.txt");
+  EXPECT_NE(log.find("body 'box': box, 3 of 3 DOF free, mass 10 kg/m"), std::string::npos) << log;
+  EXPECT_NE(log.find("line 'tether': tension_only_spring"), std::string::npos) << log;
+}
+
+TEST(BodyRuns, StopAndRestartIsBitIdenticalWithBodies) {
+  const std::string dir = freshDir("moorsph_body_restart");
+  const std::string scene = test::writeScene(dir + "/scene.yaml", kBox);
+  ASSERT_EQ(app::runScene(options(scene, dir + "/straight", 0.16)), app::kSuccess);
+  ASSERT_EQ(app::runScene(options(scene, dir + "/first", 0.1)), app::kSuccess);
+  app::RunOptions again = options(scene, dir + "/second", 0.16);
+  again.restart = dir + "/first/checkpoint.h5";
+  ASSERT_EQ(app::runScene(again), app::kSuccess);
+  const auto a = io::readCheckpoint(dir + "/straight/checkpoint.h5");
+  const auto b = io::readCheckpoint(dir + "/second/checkpoint.h5");
+  const auto half = io::readCheckpoint(dir + "/first/checkpoint.h5");
+  ASSERT_FALSE(a.bodies.empty());
+  EXPECT_EQ(a.steps, b.steps);
+  EXPECT_EQ(a.r, b.r);
+  EXPECT_EQ(a.v, b.v);
+  EXPECT_EQ(a.rho, b.rho);
+  EXPECT_TRUE(identical(a.bodies, b.bodies));  // body time, pose, velocities, wrenches, line states
+  const auto sa = app::unpackSnapshot(a.bodies), sh = app::unpackSnapshot(half.bodies);
+  EXPECT_GT(std::abs(sa.bodies[0].position.y() - sh.bodies[0].position.y()), 1e-6) << "the box did not move";
+}
+
+TEST(BodyRuns, RestartMayChangeMassAndLineButNotTheBody) {
+  const std::string dir = freshDir("moorsph_body_variant");
+  const std::string scene = test::writeScene(dir + "/scene.yaml", kBox);
+  ASSERT_EQ(app::runScene(options(scene, dir + "/first", 0.1)), app::kSuccess);
+  app::RunOptions same = options(scene, dir + "/same", 0.14);
+  same.restart = dir + "/first/checkpoint.h5";
+  ASSERT_EQ(app::runScene(same), app::kSuccess);
+  app::RunOptions heavy = options(scene, dir + "/heavy", 0.14);
+  heavy.restart = dir + "/first/checkpoint.h5";
+  heavy.sets = {"bodies.0.mass=20", "bodies.0.inertia=0.0833333", "moorings.0.stiffness=300", "moorings.0.rest_length=0.1"};
+  ASSERT_EQ(app::runScene(heavy), app::kSuccess);
+  // Twice the mass with the same buoyancy: without added mass the box would
+  // accelerate down at (B - 2 m g) / 2m = -g/2 (more with the now taut line) where it
+  // floated; its heave added mass (of the order of its own mass) and the buoyancy it
+  // gains as it sinks slow that down: at least a quarter of it over the 0.04 s.
+  const auto s = app::unpackSnapshot(io::readCheckpoint(dir + "/same/checkpoint.h5").bodies);
+  const auto h = app::unpackSnapshot(io::readCheckpoint(dir + "/heavy/checkpoint.h5").bodies);
+  const double dv = h.bodies[0].velocity.y() - s.bodies[0].velocity.y();
+  EXPECT_LT(dv, -0.25 * 0.5 * 9.81 * 0.04) << "a heavier box must sink faster";
+  EXPECT_NE(slurp(dir + "/heavy/log.txt").find("mass 20 kg/m"), std::string::npos);
+  app::RunOptions bigger = options(scene, dir + "/bigger", 0.14);
+  bigger.restart = dir + "/first/checkpoint.h5";
+  bigger.sets = {"bodies.0.shape.box.size=[0.3, 0.1]"};
+  EXPECT_EQ(app::runScene(bigger), app::kBadInput);
+}
+
+TEST(BodyRuns, CheckListsBodiesAndLines) {
+  const std::string dir = freshDir("moorsph_body_check");
+  const std::string scene = test::writeScene(dir + "/scene.yaml", kBox);
+  std::FILE* pipe = popen((std::string(MOORSPH_BINARY) + " check --threads 1 " + scene + " 2>&1").c_str(), "r");
+  std::string out;
+  char buffer[512];
+  while (pipe && std::fgets(buffer, sizeof buffer, pipe)) out += buffer;
+  ASSERT_EQ(WEXITSTATUS(pclose(pipe)), 0) << out;
+  EXPECT_NE(out.find("effects: pressure viscosity xsph gravity walls bodies"), std::string::npos) << out;
+  EXPECT_NE(out.find("body 'box': box, 3 of 3 DOF free"), std::string::npos) << out;
+  EXPECT_NE(out.find("boundary particles on its surface"), std::string::npos) << out;
+  EXPECT_NE(out.find("line 'tether': tension_only_spring from box to a ground anchor, initial tension 0 N at the fairlead (slack)"),
+            std::string::npos) << out;
+  EXPECT_NE(out.find("coupling: bodies held until t = 0.05 s"), std::string::npos) << out;
+}
+
+TEST(BodyRuns, BodyExampleScenesRun) {
+  // The annotated examples under cases/ run a few steps at a coarse resolution.
+  const std::string source = std::getenv("MOORSPH_SOURCE_DIR") ? std::getenv("MOORSPH_SOURCE_DIR") : ".";
+  for (const char* name : {"floating_box_2d", "tethered_buoy_3d", "moored_buoy_catenary_3d"}) {
+    SCOPED_TRACE(name);
+    app::RunOptions o = options(source + "/cases/" + name + ".yaml", testing::TempDir() + "moorsph_example_" + name, 0.01);
+    o.sets = {"output.interval=0.005"};
+    if (std::string(name) != "floating_box_2d") o.sets.push_back("resolution.dx=0.04");
+    std::filesystem::remove_all(o.out);
+    EXPECT_EQ(app::runScene(o), app::kSuccess);
+  }
+}
