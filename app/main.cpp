@@ -3,6 +3,7 @@
 //   moorsph check SCENE.yaml      validate and estimate the cost
 //   moorsph export DIR --csv      time series as CSV files
 //   moorsph plot DIR              time series as PNG plots
+//   moorsph study SCENE.yaml --dx LIST --metric NAME   accuracy against cost (app/study/)
 // With no subcommand it runs the built-in demo scene, a 2D dam break, and says where
 // its output went (the README's first command relies on this).
 #include <CLI/CLI.hpp>
@@ -14,6 +15,7 @@
 #include <moorsph/cases/dam_break.hpp>
 #include <moorsph/cases/run_recorder.hpp>
 #include "run/run_scene.hpp"
+#include "study/study_cli.hpp"
 
 namespace {
 
@@ -107,6 +109,9 @@ int main(int argc, char** argv) {
   CLI::App* plot_cmd = app.add_subcommand("plot", "PNG plots of every time series of a run directory (DIR/plots/<group>.png)");
   plot_cmd->add_option("dir", plot_dir, "run directory")->required()->check(CLI::ExistingDirectory);
 
+  study::StudyOptions study_options;
+  CLI::App* study_cmd = study::addStudyCommand(app, study_options);
+
   app.footer(
       "Exit codes: 0 success, 1 bad arguments, 2 bad input (scene or checkpoint rejected), 3 the run stopped on a "
       "numerical failure (failure checkpoint and diagnostic written), 4 output could not be written (or plotting unavailable), 130 interrupted "
@@ -120,6 +125,7 @@ int main(int argc, char** argv) {
   if (*check_cmd) return checkScene(check_scene, check_sets, check_threads);
   if (*export_cmd) return exportRun(export_dir);
   if (*plot_cmd) return plotRun(plot_dir);
+  if (*study_cmd) return study::runStudy(study_options);
   try {
     return runDemo(demo);
   } catch (const std::invalid_argument& e) {

@@ -1,0 +1,176 @@
+#include "study/metrics.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace moorsph::app::study {
+namespace {
+
+std::string num(double x) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", x);
+  return text;
+}
+
+void requireSamples(const Series& s) {
+  if (s.time.size() != s.value.size()) throw std::invalid_argument("time and value columns differ in length");
+  if (s.time.empty()) throw std::invalid_argument("the series is empty");
+}
+
+/// The samples inside the window, in order.
+Series clip(const Series& s, const Window& w) {
+  requireSamples(s);
+  Series c;
+  for (std::size_t k = 0; k < s.time.size(); ++k)
+    if (s.time[k] >= w.from && s.time[k] <= w.to) {
+      c.time.push_back(s.time[k]);
+      c.value.push_back(s.value[k]);
+    }
+  if (c.time.size() < 2)
+    throw std::invalid_argument("fewer than 2 samples in the window [" + num(w.from) + ", " + num(w.to) + "] s");
+  return c;
+}
+
+double average(const Series& c) {
+  double area = 0.0;
+  for (std::size_t k = 1; k < c.time.size(); ++k)
+    area += 0.5 * (c.value[k] + c.value[k - 1]) * (c.time[k] - c.time[k - 1]);
+  const double span = c.time.back() - c.time.front();
+  return span > 0.0 ? area / span : c.value.front();
+}
+
+struct Wave {
+  double crest, trough, crest_time;
+};
+
+/// Complete waves between consecutive up-crossings of the window mean. The crossing
+/// index k is the first sample at or above the mean after one below it.
+std::vector<Wave> upCrossingWaves(const Series& s, const Window& w) {
+  const Series c = clip(s, w);
+  const double mean = average(c);
+  std::vector<std::size_t> ups;
+  for (std::size_t k = 1; k < c.value.size(); ++k)
+    if (c.value[k - 1] < mean && c.value[k] >= mean) ups.push_back(k);
+  std::vector<Wave> waves;
+  for (std::size_t n = 1; n < ups.size(); ++n) {
+    Wave wave{c.value[ups[n - 1]], c.value[ups[n - 1]], c.time[ups[n - 1]]};
+    for (std::size_t k = ups[n - 1]; k < ups[n]; ++k) {
+      if (c.value[k] > wave.crest) {
+        wave.crest = c.value[k];
+        wave.crest_time = c.time[k];
+      }
+      wave.trough = std::min(wave.trough, c.value[k]);
+    }
+    waves.push_back(wave);
+  }
+  return waves;
+}
+
+}  // namespace
+
+double valueAt(const Series& s, double t) {
+  requireSamples(s);
+  if (!(t >= s.time.front() && t <= s.time.back()))
+    throw std::invalid_argument("time " + num(t) + " s is outside the series' span [" + num(s.time.front()) + ", " +
+                                num(s.time.back()) + "] s");
+  const auto hi = std::lower_bound(s.time.begin(), s.time.end(), t);
+  const std::size_t k = static_cast<std::size_t>(hi - s.time.begin());
+  if (k == 0 || s.time[k] == t) return s.value[k];
+  const double f = (t - s.time[k - 1]) / (s.time[k] - s.time[k - 1]);
+  return s.value[k - 1] + f * (s.value[k] - s.value[k - 1]);
+}
+
+double meanValue(const Series& s, const Window& w) { return average(clip(s, w)); }
+
+double peakAmplitude(const Series& s, const Window& w) {
+  const Series c = clip(s, w);
+  double peak = 0.0;
+  for (double v : c.value) peak = std::max(peak, std::abs(v - c.value.front()));
+  return peak;
+}
+
+double firstPeak(const Series& s, const Window& w, double width) {
+  const Series c = clip(s, w);
+  if (!(width > 0.0)) width = 0.05 * (c.time.back() - c.time.front());
+  std::size_t lo = 0, hi = 0;  // samples within [t_k - width, t_k + width] are [lo, hi)
+  for (std::size_t k = 0; k < c.time.size() && c.time[k] + width <= c.time.back(); ++k) {
+    while (c.time[lo] < c.time[k] - width) ++lo;
+    while (hi < c.time.size() && c.time[hi] <= c.time[k] + width) ++hi;
+    // A peak, not the window's starting edge: something lower must come before it.
+    const bool rises_into = k > 0 && c.value[k - 1] < c.value[k];
+    if (rises_into && *std::max_element(c.value.begin() + static_cast<long>(lo), c.value.begin() + static_cast<long>(hi)) <=
+                          c.value[k])
+      return c.value[k];
+  }
+  throw std::invalid_argument("no local maximum (largest within +-" + num(width) + " s) in the window");
+}
+
+double waveHeight(const Series& s, const Window& w) {
+  const auto waves = upCrossingWaves(s, w);
+  if (waves.empty()) throw std::invalid_argument("no complete zero-up-crossing wave in the window");
+  double sum = 0.0;
+  for (const auto& wave : waves) sum += wave.crest - wave.trough;
+  return sum / static_cast<double>(waves.size());
+}
+
+double periodBetweenPeaks(const Series& s, const Window& w) {
+  const auto waves = upCrossingWaves(s, w);
+  if (waves.size() < 2) throw std::invalid_argument("fewer than 2 complete zero-up-crossing waves in the window");
+  return (waves.back().crest_time - waves.front().crest_time) / static_cast<double>(waves.size() - 1);
+}
+
+double rmsDifference(const Series& run, const Series& reference, const Window& w) {
+  requireSamples(run);
+  requireSamples(reference);
+  double sum = 0.0;
+  std::size_t n = 0;
+  for (std::size_t k = 0; k < reference.time.size(); ++k) {
+    const double t = reference.time[k];
+    if (t < w.from || t > w.to || t < run.time.front() || t > run.time.back()) continue;
+    const double d = valueAt(run, t) - reference.value[k];
+    sum += d * d;
+    ++n;
+  }
+  if (n == 0) throw std::invalid_argument("no reference sample inside both the window and the run's time span");
+  return std::sqrt(sum / static_cast<double>(n));
+}
+
+const std::vector<MetricInfo>& metrics() {
+  static const std::vector<MetricInfo> list = {
+      {"front_position", "surge front x [m] at --time (dam break); from particles.h5 or a 'front' series", true, false, "front"},
+      {"value_at", "series value at --time", true, false, ""},
+      {"mean_value", "time average over [--from, --to] (e.g. equilibrium draught)", false, false, ""},
+      {"peak_amplitude", "largest |v - v(--from)| over the window", false, false, ""},
+      {"first_peak", "value of the first local maximum in the window (largest within +- --width)", false, false, ""},
+      {"wave_height", "mean crest-to-trough height of the zero-up-crossing waves in the window", false, false, ""},
+      {"period_between_peaks", "mean time between crests of the zero-up-crossing waves in the window", false, false, ""},
+      {"gauge_rms", "RMS difference from the --reference series (CSV time,value) over the window", false, true, ""},
+  };
+  return list;
+}
+
+const MetricInfo* findMetric(const std::string& name) {
+  for (const auto& m : metrics())
+    if (m.name == name) return &m;
+  return nullptr;
+}
+
+double evaluateMetric(const std::string& name, const Series& s, const MetricParams& p, const Series* reference) {
+  if (name == "front_position" || name == "value_at") {
+    if (std::isnan(p.time)) throw std::invalid_argument(name + " needs --time");
+    return valueAt(s, p.time);
+  }
+  if (name == "mean_value") return meanValue(s, p.window);
+  if (name == "peak_amplitude") return peakAmplitude(s, p.window);
+  if (name == "first_peak") return firstPeak(s, p.window, p.width);
+  if (name == "wave_height") return waveHeight(s, p.window);
+  if (name == "period_between_peaks") return periodBetweenPeaks(s, p.window);
+  if (name == "gauge_rms") {
+    if (!reference) throw std::invalid_argument("gauge_rms needs a reference series (--reference FILE)");
+    return rmsDifference(s, *reference, p.window);
+  }
+  throw std::invalid_argument("unknown metric '" + name + "'");
+}
+
+}  // namespace moorsph::app::study

@@ -1,0 +1,141 @@
+// `moorsph study` as a user runs it, CI-sized: a small 2D dam break at dx = 0.02 and
+// 0.01 m for 0.1 s of simulated time, at two CFL numbers; the table, CSV and plot
+// exist and their numbers agree with each other and with outside bounds (particle
+// counts of the lattice, Ritter's front speed); bad arguments exit 1 with a message.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace {
+
+struct Result {
+  int code = -1;
+  std::string output;
+};
+
+Result run(const std::string& arguments) {
+  Result r;
+  std::FILE* pipe = popen((std::string(MOORSPH_BINARY) + " " + arguments + " 2>&1").c_str(), "r");
+  char buffer[512];
+  while (pipe && std::fgets(buffer, sizeof buffer, pipe)) r.output += buffer;
+  const int status = pipe ? pclose(pipe) : -1;
+  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return r;
+}
+
+// Martin & Moyce geometry: column a = 0.1 m wide, 2a high, in a 0.4 m x 0.3 m tank.
+const char* const kScene = R"(dim: 2
+name: study_dam_break
+end_time: 1.0
+resolution: {dx: 0.01}
+fluid: {sound_speed: 28}
+effects: [pressure, viscosity, xsph, gravity, walls]
+geometry:
+  - tank: {name: tank, lower: [0, 0], upper: [0.4, 0.3], lid: true}
+  - water: {lower: [0, 0], upper: [0.1, 0.2]}
+output: {interval: 0.01, particles_interval: 0.05, checkpoint_minutes: 0}
+)";
+
+std::vector<std::vector<std::string>> readCsv(const std::string& path) {
+  std::ifstream in(path);
+  std::vector<std::vector<std::string>> rows;
+  std::string line;
+  while (std::getline(in, line)) {
+    std::vector<std::string> cells;
+    std::stringstream s(line);
+    std::string cell;
+    while (std::getline(s, cell, ',')) cells.push_back(cell);
+    if (!line.empty() && line.back() == ',') cells.emplace_back();
+    rows.push_back(cells);
+  }
+  return rows;
+}
+
+}  // namespace
+
+TEST(StudyCli, TwoResolutionsTwoCflNumbersWriteConsistentTablesAndPlot) {
+  const std::string dir = testing::TempDir() + "moorsph_study";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  const std::string scene = dir + "/scene.yaml";
+  std::ofstream(scene) << kScene;
+  const double reference = 0.2;
+  const Result r = run("study " + scene + " --dx 0.01,0.02 --metric front_position --time 0.1 --reference 0.2 " +
+                       "--vary method.cfl=0.25,0.5 --threads 1 --out " + dir + "/study");
+  ASSERT_EQ(r.code, 0) << r.output;
+  const auto csv = readCsv(dir + "/study/study.csv");
+  ASSERT_EQ(csv.size(), 5u) << r.output;
+  ASSERT_EQ(csv[0].size(), 11u);
+  EXPECT_EQ(csv[0][1], "dx");
+  const double a = 0.1, ritter = 2.0 * std::sqrt(9.81 * 2.0 * a);
+  for (std::size_t k = 1; k < csv.size(); ++k) {
+    const auto& c = csv[k];
+    ASSERT_EQ(c.size(), 11u) << k;
+    const double dx = std::stod(c[1]), fluid = std::stod(c[2]), steps = std::stod(c[4]), wall = std::stod(c[5]);
+    const double value = std::stod(c[6]), error = std::stod(c[8]), relative = std::stod(c[9]);
+    EXPECT_EQ(dx, k % 2 == 1 ? 0.02 : 0.01) << "coarse first within each variant";
+    EXPECT_EQ(c[0], k <= 2 ? "\"method.cfl=0.25\"" : "\"method.cfl=0.5\"");
+    EXPECT_EQ(fluid, std::round(a / dx) * std::round(2.0 * a / dx));  // the lattice fills the column
+    EXPECT_GT(wall, 0.0);
+    // The front moved, but no faster than Ritter's 2 sqrt(g 2a).
+    EXPECT_GT(value, a + 0.02);
+    EXPECT_LT(value, a + ritter * 0.1 + dx);
+    EXPECT_NEAR(error, std::abs(value - reference), 1e-9);
+    EXPECT_NEAR(relative, error / reference, 1e-9);
+    EXPECT_GT(steps, 0.1 / (0.5 * 1.2 * dx / 28.0) * (k <= 2 ? 1.9 : 0.95));  // dt <= cfl h / c_s, h = 1.2 dx
+    if (k % 2 == 0) {
+      const double coarse_error = std::stod(csv[k - 1][8]);
+      if (c[10].empty()) EXPECT_TRUE(error == 0.0 || coarse_error <= error);
+      else EXPECT_NEAR(std::stod(c[10]), std::log(coarse_error / error) / std::log(2.0), 1e-6);
+    }
+  }
+  // Halving the CFL number doubles the steps at a given dx.
+  EXPECT_NEAR(std::stod(csv[1][4]) / std::stod(csv[3][4]), 2.0, 0.1);
+  std::ifstream md(dir + "/study/study.md");
+  const std::string text((std::istreambuf_iterator<char>(md)), {});
+  for (const char* expected : {"| variant | dx [m] | fluid particles | steps | wall [s] |", "(method.cfl=0.5): 0.2 — given",
+                               "for front_position (method.cfl=0.5) within", "![error against cost](study.png)"})
+    EXPECT_NE(text.find(expected), std::string::npos) << expected << "\n" << text;
+  EXPECT_TRUE(std::filesystem::exists(dir + "/study/runs/00_dx0.02/series.h5"));
+  if (std::system("/usr/bin/python3 -c 'import matplotlib' > /dev/null 2>&1") == 0) {
+    std::ifstream png(dir + "/study/study.png", std::ios::binary);
+    char magic[8] = {};
+    png.read(magic, 8);
+    EXPECT_EQ(std::string(magic + 1, 3), "PNG");
+  }
+}
+
+TEST(StudyCli, BadArgumentsExitOneWithAMessage) {
+  const std::string dir = testing::TempDir() + "moorsph_study_bad";
+  std::filesystem::create_directories(dir);
+  const std::string scene = dir + "/scene.yaml";
+  std::ofstream(scene) << kScene;
+  const std::string base = "study " + scene + " --out " + dir + "/out ";
+  struct Case {
+    std::string arguments, message;
+  };
+  for (const Case& c : std::vector<Case>{
+           {"--dx 0.02,0.01 --metric frontier --reference 0.2", "--metric 'frontier': unknown metric"},
+           {"--dx 0.02 --metric front_position --time 0.1 --reference 0.2", "at least two spacings"},
+           {"--dx 0.02,zero --metric front_position --time 0.1 --reference 0.2", "'zero' is not a particle spacing"},
+           {"--dx 0.02,0.01 --metric front_position --time 0.1 --reference " + dir + "/none.csv",
+            "neither a number nor an existing file"},
+           {"--dx 0.02,0.01 --metric front_position --time 0.1", "at least three --dx values"},
+           {"--dx 0.02,0.01 --metric front_position --reference 0.2", "needs --time"},
+           {"--dx 0.02,0.01 --metric gauge_rms --series gauges/G --reference 0.2", "needs --reference FILE"},
+           {"--dx 0.02,0.01 --metric mean_value --reference 0.2", "needs --series"},
+       }) {
+    const Result r = run(base + c.arguments);
+    EXPECT_EQ(r.code, 1) << c.arguments << "\n" << r.output;
+    EXPECT_NE(r.output.find(c.message), std::string::npos) << c.arguments << "\n" << r.output;
+  }
+  EXPECT_FALSE(std::filesystem::exists(dir + "/out/runs/00_dx0.02"));
+}
