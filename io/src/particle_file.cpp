@@ -54,7 +54,23 @@ ParticleFile::ParticleFile(const std::string& directory) : directory_(directory)
   if (file_ < 0) throw std::runtime_error(path + ": cannot create HDF5 file");
   h5::Handle g(H5Gcreate2(file_, "snapshots", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose, "create /snapshots");
   h5::writeStringAttribute(g, "description", "one group per output time; fluid first (by id), then boundary");
+  h5::Handle v(H5Gcreate2(file_, "polyvertex", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose, "create /polyvertex");
+  h5::writeStringAttribute(v, "description", "/polyvertex/N = 0..N-1: the XDMF vertex cells of an N-particle snapshot");
   writeXdmf();
+}
+
+// ParaView's Xdmf3 readers (Xdmf3ReaderS is the one OpenDataFile picks for .xmf) build
+// no cells from a Polyvertex topology without connectivity, so the points exist but
+// draw nothing in the default Surface representation (seen with ParaView 5.11). An
+// explicit 0..N-1 list, one per particle count and shared by every snapshot of that
+// count, gives one vertex cell per particle in both the Xdmf2 and Xdmf3 readers.
+void ParticleFile::writePolyvertex(std::size_t n) {
+  const std::string path = "polyvertex/" + std::to_string(n);
+  if (H5Lexists(file_, path.c_str(), H5P_DEFAULT) > 0) return;
+  std::vector<std::int64_t> index(n);
+  for (std::size_t i = 0; i < n; ++i) index[i] = static_cast<std::int64_t>(i);
+  h5::Handle v(H5Gopen2(file_, "polyvertex", H5P_DEFAULT), H5Gclose, "open /polyvertex");
+  h5::writeInt64(v, std::to_string(n), index, "1");
 }
 
 ParticleFile::~ParticleFile() {
@@ -75,6 +91,7 @@ void ParticleFile::write(const ParticleSnapshot& s) {
     h5::writeInt32(g, "type", s.type, "1");
     h5::writeInt64(g, "id", s.id, "1");
   }
+  writePolyvertex(s.size());
   if (H5Fflush(file_, H5F_SCOPE_GLOBAL) < 0) throw std::runtime_error("HDF5: flush particles.h5");
   entries_.push_back({group, s.time, s.size()});
   writeXdmf();
@@ -96,8 +113,9 @@ void ParticleFile::writeXdmf() const {
       char time[40];
       std::snprintf(time, sizeof time, "%.17g", e.time);
       x << "   <Grid Name=\"" << e.group << "\" GridType=\"Uniform\">\n    <Time Value=\"" << time << "\"/>\n"
-        << "    <Topology TopologyType=\"Polyvertex\" NumberOfElements=\"" << n << "\" NodesPerElement=\"1\"/>\n"
-        << "    <Geometry GeometryType=\"XYZ\">\n";
+        << "    <Topology TopologyType=\"Polyvertex\" NumberOfElements=\"" << n << "\" NodesPerElement=\"1\">\n";
+      x << "     <DataItem Dimensions=\"" << n << "\" NumberType=\"Int\" Precision=\"8\" Format=\"HDF\">particles.h5:/polyvertex/"
+        << n << "</DataItem>\n    </Topology>\n    <Geometry GeometryType=\"XYZ\">\n";
       item("position", (n + " 3").c_str(), "Float", 8);
       x << "    </Geometry>\n";
       x << "    <Attribute Name=\"velocity\" AttributeType=\"Vector\" Center=\"Node\">\n";

@@ -85,6 +85,11 @@ times = [float(g.find("Time").get("Value")) for g in grids]
 check(times == sorted(times) and times[0] == 0.0, f"xmf times increase from 0: {times}")
 names = {a.get("Name") for a in grids[0].findall("Attribute")}
 check({"velocity", "pressure", "density", "type"} <= names, f"xmf attributes: {names}")
+# ParaView's Xdmf3 readers make no vertex cells (nothing drawn) from a Polyvertex
+# topology without connectivity; tools/check_paraview.py checks the file in ParaView.
+topology = [g.find("Topology/DataItem") for g in grids]
+check(all(t is not None and t.text.endswith("/polyvertex/" + t.get("Dimensions")) for t in topology),
+      "every xmf grid has its 0..N-1 polyvertex connectivity")
 for name in ("scene.resolved.yaml", "log.txt", "checkpoint.h5"):
     check(os.path.exists(os.path.join(run, name)), f"{name} written")
 

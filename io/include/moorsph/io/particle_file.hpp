@@ -2,8 +2,10 @@
 // Particle snapshots for ParaView: particles.h5 holds one group per output time,
 //   /snapshots/000000/{position (N,3) m, velocity (N,3) m/s, pressure (N) Pa,
 //                      density (N) kg/m^3, type (N) 0 fluid 1 boundary, id (N)}
-// with a `time` attribute [s] on each group, and particles.xmf (XDMF 2) lists them as
-// a temporal collection of point grids, so ParaView opens particles.xmf directly.
+// with a `time` attribute [s] on each group, plus /polyvertex/N (0..N-1, the vertex
+// cells of an N-particle grid), and particles.xmf (XDMF 2) lists them as a temporal
+// collection of point grids, so ParaView opens particles.xmf directly (checked with
+// tools/check_paraview.py).
 // Positions are padded to three components in 2D (z = 0), which every XDMF reader
 // understands. Fluid particles come first, in id order (stable across re-sorts and
 // restarts), then the boundary particles. The HDF5 file is flushed and the XDMF file
@@ -45,6 +47,7 @@ class ParticleFile {
 
  private:
   void writeXdmf() const;
+  void writePolyvertex(std::size_t n);
 
   struct Entry {
     std::string group;
