@@ -182,4 +182,10 @@ TEST(BreakingLoad, LumpedMassLineOnABodyIsReportedAndTheRunContinues) {
   EXPECT_EQ(d.fairleadTension, 0.0);
   EXPECT_NEAR(sys.time(), 1.0, 1e-12);
   EXPECT_LT(sys.kinematics(0).acceleration.norm(), 1e-12);  // nothing acts on it any more
+  // A checkpoint keeps the report.
+  const mb::SystemSnapshot snap = sys.snapshot();
+  ASSERT_EQ(snap.lines.size(), 1u);
+  EXPECT_TRUE(snap.lines[0].broken);
+  EXPECT_EQ(snap.lines[0].breakTime, d.breakTime);
+  EXPECT_EQ(snap.lines[0].breakTension, d.breakTension);
 }
