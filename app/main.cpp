@@ -4,67 +4,51 @@
 //   moorsph export DIR --csv      time series as CSV files
 //   moorsph plot DIR              time series as PNG plots
 //   moorsph study SCENE.yaml --dx LIST --metric NAME   accuracy against cost (app/study/)
-// With no subcommand it runs the built-in demo scene, a 2D dam break, and says where
-// its output went (the README's first command relies on this).
+// With no subcommand it runs the built-in demo scene, a coarse tethered buoy release
+// (3D, a few minutes on 2 cores), plots it and says where its output went (the
+// README's first command relies on this).
 #include <CLI/CLI.hpp>
 #include <omp.h>
 
 #include <cstdio>
 #include <filesystem>
 #include <string>
-#include <moorsph/cases/dam_break.hpp>
-#include <moorsph/cases/run_recorder.hpp>
+#include <fstream>
+#include "run/demo_scene.hpp"
 #include "run/run_scene.hpp"
 #include "study/study_cli.hpp"
 
 namespace {
 
 struct DemoOptions {
-  std::string out = "moorsph-output/dam_break_2d";
-  double end = 1.0;
-  double dx = 0.004;
+  std::string out = "moorsph-output/demo_buoy_release";
+  double end = 0.0;  ///< 0: the demo scene's
+  double dx = 0.0;   ///< 0: the demo scene's
   int threads = 0;
-  bool density_diffusion = false;
 };
 
+/// The built-in demo (run/demo_scene.hpp): written to <out>/demo_scene.yaml, run like
+/// any scene, then plotted into <out>/plots.
 int runDemo(const DemoOptions& o) {
-  using namespace moorsph;
-  if (o.threads > 0) omp_set_num_threads(o.threads);
-  cases::DamBreakSpec<2> spec;
-  spec.dx = o.dx;
-  if (o.density_diffusion) spec.effects.push_back("density_diffusion");
-  auto scene = cases::buildDamBreak<2>(spec);
-  fluid::FluidSimulation<2> sim(scene.setup, scene.fluid, scene.boundary);
-
+  using namespace moorsph::app;
   std::filesystem::create_directories(o.out);
-  const std::string series_path = o.out + "/series.h5";
-  io::SeriesFile file(series_path);
-  cases::RunRecorder<2> recorder(sim, file, 0.01);
-  const double dx = spec.dx;
-  recorder.addSeries("front", {{"x", "m"}},
-                     [dx](const fluid::FluidSimulation<2>& s) { return std::vector<double>{cases::measureFront(s.fluid(), dx)}; },
-                     "surge front: largest x of fluid particles within 2 dx of the floor");
-
-  std::printf("moorsph demo: 2D dam break, column a = %.3f m x 2a in a %.2f x %.2f m closed tank\n",
-              spec.column_width, spec.tank_length, spec.tank_height);
-  std::printf("  %zu fluid particles, %zu boundary particles, dx = %.4f m, c_s = %.1f m/s, dt <= %.3e s, %d threads\n",
-              sim.fluid().size(), sim.walls()->particles().size(), dx, scene.setup.sound_speed, sim.cflDt(),
-              omp_get_max_threads());
-  std::printf("  effects:");
-  for (const auto& e : sim.effectNames()) std::printf(" %s", e.c_str());
-  std::printf("\n");
-  const auto summary = recorder.runTo(o.end, [](const std::string& line) {
-    static int n = 0;
-    if (++n % 10 == 0) std::printf("  %s\n", line.c_str());
-  });
-  std::printf("simulated %.3f s in %zu steps, %.1f s wall (%.0f particle-steps/s)\n", summary.simulated_time,
-              summary.steps, summary.wall_seconds, summary.particles * summary.steps / summary.wall_seconds);
-  std::printf("output: %s (series: front, energy)\n", std::filesystem::absolute(series_path).c_str());
-  if (!summary.error.empty()) {
-    std::fprintf(stderr, "error: %s\n", summary.error.c_str());
-    return 3;
-  }
-  return 0;
+  const std::string scene = o.out + "/demo_scene.yaml";
+  std::ofstream(scene) << kDemoScene;
+  std::printf("moorsph demo: a tethered buoy (R = 0.1015 m, 1.745 kg) pulled 6 cm under and released, 3D, coarse\n"
+              "  scene: %s\n", std::filesystem::absolute(scene).c_str());
+  RunOptions run;
+  run.scene = scene;
+  run.out = o.out;
+  run.threads = o.threads;
+  run.end = o.end;
+  if (o.dx > 0.0) run.sets.push_back("resolution.dx=" + std::to_string(o.dx));
+  const int code = runScene(run);
+  if (code != kSuccess) return code;
+  const int plotted = plotRun(o.out);
+  std::printf("output: %s (series.h5, particles.xmf for ParaView, log.txt%s)\n",
+              std::filesystem::absolute(o.out).c_str(), plotted == kSuccess ? ", plots/*.png" : "");
+  std::printf("  look at plots/body_buoy.png (heave y), plots/line_tether.png (tension), plots/ledger.png (energy)\n");
+  return kSuccess;
 }
 
 }  // namespace
@@ -78,7 +62,6 @@ int main(int argc, char** argv) {
   app.add_option("--end", demo.end, "simulated end time of the demo [s]")->check(CLI::PositiveNumber);
   app.add_option("--dx", demo.dx, "particle spacing of the demo [m]")->check(CLI::PositiveNumber);
   app.add_option("--threads", demo.threads, "OpenMP threads (0: OMP_NUM_THREADS or all cores)");
-  app.add_flag("--density-diffusion", demo.density_diffusion, "add the density-diffusion term (not in the reference method)");
 
   RunOptions run;
   CLI::App* run_cmd = app.add_subcommand("run", "run a scene file (docs/scene-reference.md)");

@@ -2,6 +2,7 @@
 
 #include <Eigen/Geometry>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
@@ -81,6 +82,13 @@ bodies::MooringLineParams lineParams(const io::SceneConfig& c, const io::Mooring
 }
 
 }  // namespace
+
+// Eigen's eulerAngles puts its first angle in [0, pi] and flips the others by pi near
+// zero: unreadable in a plot of small motions. These are continuous through zero.
+Eigen::Vector3d rollPitchYaw(const Eigen::Quaterniond& q) {
+  const Eigen::Matrix3d R = q.normalized().toRotationMatrix();
+  return Eigen::Vector3d(std::atan2(R(2, 1), R(2, 2)), std::asin(std::clamp(-R(2, 0), -1.0, 1.0)), std::atan2(R(1, 0), R(0, 0)));
+}
 
 std::unique_ptr<bodies::MultibodySystem> buildSceneBodies(const io::SceneConfig& c) {
   bodies::SystemOptions options;
@@ -202,10 +210,11 @@ void attachBodySeries(cases::RunRecorder<D>& recorder, const coupling::CoSimulat
     recorder.addSeries("body_" + name, pose, [&co, body](const fluid::FluidSimulation<D>&) {
       const bodies::BodyKinematics k = co.bodies().kinematics(body);
       std::vector<double> v{k.position.x(), k.position.y()};
-      // roll, pitch, yaw: rotations about ground x, y, z applied in that order (R = Rz Ry Rx).
-      const Eigen::Vector3d ypr = k.orientation.toRotationMatrix().eulerAngles(2, 1, 0);
-      if (D == 3) v.insert(v.end(), {k.position.z(), ypr[2], ypr[1], ypr[0], k.orientation.w(), k.orientation.x(),
-                                      k.orientation.y(), k.orientation.z()});
+      if (D == 3) {
+        const Eigen::Vector3d rpy = rollPitchYaw(k.orientation);
+        v.insert(v.end(), {k.position.z(), rpy[0], rpy[1], rpy[2], k.orientation.w(), k.orientation.x(),
+                           k.orientation.y(), k.orientation.z()});
+      }
       else v.push_back(2.0 * std::atan2(k.orientation.z(), k.orientation.w()));
       return v;
     }, "body reference point position and orientation (roll, pitch, yaw: R = Rz(yaw) Ry(pitch) Rx(roll); quaternion body -> ground)");

@@ -24,6 +24,10 @@ std::unique_ptr<coupling::CoSimulation<D>> makeCoSimulation(const io::SceneConfi
                                                              const fluid::FluidParticles<D>& particles,
                                                              const std::vector<double>& restore);
 
+/// Roll, pitch, yaw [rad] of a body -> ground rotation R = Rz(yaw) Ry(pitch) Rx(roll):
+/// pitch in [-pi/2, pi/2], roll and yaw in (-pi, pi].
+Eigen::Vector3d rollPitchYaw(const Eigen::Quaterniond& orientation);
+
 /// SystemSnapshot <-> a flat list of numbers for checkpoint.h5 (dataset "bodies").
 std::vector<double> packSnapshot(const bodies::SystemSnapshot& snapshot);
 bodies::SystemSnapshot unpackSnapshot(const std::vector<double>& packed);
