@@ -12,6 +12,8 @@ void readSensors(MapReader& top, SceneConfig& config);
 void readWaveMakers(MapReader& top, SceneConfig& config);
 /// Reads `bodies`, `moorings` and `coupling`; needs geometry and effects.
 void readBodies(MapReader& top, SceneConfig& config);
+/// One item of `moorings`; needs the bodies.
+MooringConfig readMooring(MapReader& m, const SceneConfig& config, std::size_t index);
 /// Writes `bodies`, `moorings` and `coupling` into scene.resolved.yaml (nothing without bodies).
 void writeBodySections(YAML::Emitter& e, const SceneConfig& config);
 /// Reads `method` on top of the reference preset.
