@@ -15,6 +15,7 @@
 #include <optional>
 #include <stdexcept>
 #include <yaml-cpp/yaml.h>
+#include <moorsph/io/scene_loader.hpp>
 #include "run/run_scene.hpp"
 #include "study/run_data.hpp"
 
@@ -71,6 +72,26 @@ std::string runLabel(std::size_t index, double dx) {
   char text[64];
   std::snprintf(text, sizeof text, "%02zu_dx%g", index, dx);
   return text;
+}
+
+/// A finished run of the same resolved scene in `run.out` (written by an earlier
+/// study): its steps and wall time from study_run.txt, so --reuse need not repeat it.
+bool reusableRun(const RunOptions& run, StudyRow& row) {
+  std::ifstream record(run.out + "/study_run.txt");
+  std::ifstream saved(run.out + "/scene.resolved.yaml");
+  if (!record || !saved) return false;
+  std::vector<std::string> sets = run.sets;
+  char end[64];
+  std::snprintf(end, sizeof end, "end_time=%.17g", run.end);  // as runScene adds it
+  if (run.end > 0.0) sets.push_back(end);
+  const std::string resolved = io::resolvedSceneYaml(io::loadSceneFile(run.scene, sets));
+  if (std::string(std::istreambuf_iterator<char>(saved), {}) != resolved) return false;
+  std::string key;
+  while (record >> key) {
+    if (key == "steps") record >> row.steps;
+    else if (key == "wall_s") record >> row.wall_seconds;
+  }
+  return row.steps > 0 && row.wall_seconds > 0.0;
 }
 
 std::string variantName(const std::vector<std::string>& assignments) {
@@ -155,13 +176,24 @@ int runStudy(const StudyOptions& o) {
       std::printf("study run %zu/%zu: dx = %g m%s -> %s\n", rows.size() + 1, total, dx,
                   row.variant.empty() ? "" : (", " + row.variant).c_str(), run.out.c_str());
       std::fflush(stdout);
-      const auto start = std::chrono::steady_clock::now();
-      const int code = runScene(run);
-      row.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-      if (code != kSuccess) {
-        std::fprintf(stderr, "error: study run %s stopped (exit %d); see %s/log.txt\n", run.out.c_str(), code,
-                     run.out.c_str());
-        return code;
+      bool reused = false;
+      try {
+        reused = o.reuse && reusableRun(run, row);
+      } catch (const std::exception&) {
+        reused = false;  // runScene reports a bad scene below
+      }
+      if (reused) {
+        std::printf("study run %zu/%zu: reusing the finished run in %s\n", rows.size() + 1, total, run.out.c_str());
+      } else {
+        const auto start = std::chrono::steady_clock::now();
+        const int code = runScene(run);
+        row.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        if (code != kSuccess) {
+          std::fprintf(stderr, "error: study run %s stopped (exit %d); see %s/log.txt\n", run.out.c_str(), code,
+                       run.out.c_str());
+          return code;
+        }
+        std::ofstream(run.out + "/study_run.txt") << "steps " << row.steps << "\nwall_s " << num(row.wall_seconds) << "\n";
       }
       try {
         const RunCounts counts = readRunCounts(run.out);

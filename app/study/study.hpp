@@ -30,6 +30,7 @@ struct StudyOptions {
   double floor = 0.0;                ///< front_position: floor height [m]
   double band = std::numeric_limits<double>::quiet_NaN();  ///< front_position: band above it [m]; NaN: 2 dx
   int threads = 0;
+  bool reuse = false;                ///< keep finished runs of the same resolved scene (study_run.txt)
 };
 
 /// Comma-separated positive spacings, at least two distinct; returned coarse to fine.
@@ -59,6 +60,7 @@ struct VariantSummary {
   std::string reference_source;       ///< "given", "file ...", "Richardson (p = ...)", or why none
   double reference = std::numeric_limits<double>::quiet_NaN();
   std::optional<double> richardson_order;
+  bool finest_is_reference = false;   ///< no extrapolate: errors are differences from the finest run
 };
 
 /// Fill reference, errors and observed orders of the rows of each variant (rows in

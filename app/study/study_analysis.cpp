@@ -107,7 +107,14 @@ std::vector<VariantSummary> analyseStudy(std::vector<StudyRow>& rows, std::optio
         s.richardson_order = r->order;
         s.reference_source = "Richardson extrapolate of the three finest runs (observed order " + num(r->order, "%.2f") + ")";
       } else {
-        s.reference_source = "none: " + why;
+        // No extrapolate: measure against the finest run, and say how far the two
+        // finest runs are apart (the uncertainty of that reference).
+        s.reference = f.back();
+        s.finest_is_reference = true;
+        const double spread = f.size() >= 2 ? std::abs(f[f.size() - 1] - f[f.size() - 2]) / std::abs(f.back()) : NAN;
+        s.reference_source = "the finest run (no Richardson extrapolate: " + why +
+                             "); the two finest runs differ by " + num(100.0 * spread, "%.2g") +
+                             "%, the uncertainty of this reference";
       }
     }
     const double divide_by = std::isnan(scale) ? std::abs(s.reference) : scale;
@@ -117,6 +124,7 @@ std::vector<VariantSummary> analyseStudy(std::vector<StudyRow>& rows, std::optio
       row.reference = s.reference;
       row.error = error_metric ? row.value : std::abs(row.value - s.reference);
       row.relative_error = divide_by > 0.0 ? row.error / divide_by : std::numeric_limits<double>::quiet_NaN();
+      if (s.finest_is_reference && k + 1 == end) row.error = row.relative_error = NAN;  // zero by construction
       errors.push_back(row.error);
     }
     const auto orders = observedOrders(h, errors);
@@ -128,8 +136,16 @@ std::vector<VariantSummary> analyseStudy(std::vector<StudyRow>& rows, std::optio
 
 std::vector<std::string> adviceLines(const std::vector<StudyRow>& rows, const std::string& metric, double simulated) {
   std::vector<std::string> lines;
-  for (const auto& [begin, end] : variantRanges(rows)) {
+  for (auto [begin, end] : variantRanges(rows)) {
     const std::string who = metric + (rows[begin].variant.empty() ? "" : " (" + rows[begin].variant + ")");
+    // Cost scales from the two finest runs, error from the finest with an error (the
+    // finest run itself has none when it is the reference).
+    const std::size_t all_end = end;
+    while (end > begin && std::isnan(rows[end - 1].relative_error)) --end;
+    if (end == begin) {
+      lines.push_back("for " + who + ": no errors (no reference)");
+      continue;
+    }
     for (double percent : {10.0, 5.0, 2.0, 1.0}) {
       const double target = percent / 100.0;
       // The coarsest run from which every finer run is within the target.
@@ -153,13 +169,14 @@ std::vector<std::string> adviceLines(const std::vector<StudyRow>& rows, const st
                         num(100.0 * fine.relative_error, "%.3g") + "%), and no positive observed order to extrapolate");
         continue;
       }
-      const auto& coarse = rows[end - 2];
       const double dx = fine.dx * std::pow(target / fine.relative_error, 1.0 / fine.order);
-      const double q = std::log(fine.wall_seconds / coarse.wall_seconds) / std::log(coarse.dx / fine.dx);
-      const double cost = fine.wall_seconds * std::pow(fine.dx / dx, q);
+      const auto& cost_fine = rows[all_end - 1];
+      const auto& cost_coarse = rows[all_end - 2];
+      const double q = std::log(cost_fine.wall_seconds / cost_coarse.wall_seconds) / std::log(cost_coarse.dx / cost_fine.dx);
+      const double cost = cost_fine.wall_seconds * std::pow(cost_fine.dx / dx, q);
       lines.push_back("for " + who + " within " + num(percent) + "% use dx <= " + num(dx, "%.3g") + " m; it costs about " +
                       num(cost, "%.3g") + " s wall for " + num(simulated, "%.3g") +
-                      " s simulated (extrapolated: error ~ dx^" + num(fine.order, "%.2f") + ", wall ~ dx^-" +
+                      " s simulated (extrapolated: error ~ dx^" + num(fine.order, "%.2f") + " from the finest errors, wall ~ dx^-" +
                       num(q, "%.2f") + " from the two finest runs)");
     }
   }

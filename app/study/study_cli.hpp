@@ -37,6 +37,9 @@ inline CLI::App* addStudyCommand(CLI::App& app, StudyOptions& o) {
       ->check(CLI::PositiveNumber);
   cmd->add_option("--threads", o.threads, "OpenMP threads per run (0: OMP_NUM_THREADS or all cores)")
       ->check(CLI::NonNegativeNumber);
+  cmd->add_flag("--reuse", o.reuse,
+               "reuse a finished run in the study directory when its resolved scene is the same (its recorded steps and "
+               "wall time are kept), e.g. to re-analyse with another metric or --reference");
   return cmd;
 }
 

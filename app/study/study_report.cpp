@@ -30,7 +30,7 @@ try:
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
-    from matplotlib.ticker import FormatStrFormatter
+    from matplotlib.ticker import FormatStrFormatter, NullFormatter
 except ImportError as error:
     print(f"study plot needs matplotlib in {sys.executable}: {error}")
     sys.exit(77)
@@ -59,9 +59,10 @@ axes[1].set_xlabel("fluid particles")
 for ax in axes:
     ax.set_ylabel("relative error [%]")
     ax.grid(True, which="both", alpha=0.3)
-    for axis in (ax.xaxis, ax.yaxis):  # plain numbers, also on the minor ticks of a short decade
+    # Plain numbers; minor ticks labelled only when the axis spans less than a decade.
+    for axis, (lo, hi) in ((ax.xaxis, ax.get_xlim()), (ax.yaxis, ax.get_ylim())):
         axis.set_major_formatter(FormatStrFormatter("%g"))
-        axis.set_minor_formatter(FormatStrFormatter("%g"))
+        axis.set_minor_formatter(FormatStrFormatter("%g") if hi < 10 * lo else NullFormatter())
 if len(variants) > 1:
     axes[0].legend(fontsize=7)
 fig.suptitle(title, fontsize=9)
@@ -97,7 +98,19 @@ void writeMarkdown(std::ostream& f, const StudyOptions& o, const std::vector<Stu
       << r.steps << " | " << num(r.wall_seconds, "%.3g") << " | " << num(r.value) << " | " << num(r.error, "%.3g")
       << " | " << (std::isnan(r.relative_error) ? "n/a" : num(100.0 * r.relative_error, "%.3g") + "%") << " | "
       << num(r.order, "%.2f") << " |\n";
-  f << "\nObserved order: from each run and the next coarser one, p = ln(e1/e2) / ln(dx1/dx2).\n\n";
+  f << "\nObserved order: from each run and the next coarser one, p = ln(e1/e2) / ln(dx1/dx2).";
+  bool richardson = false, finest = false;
+  for (const auto& s : summaries) {
+    richardson = richardson || s.richardson_order.has_value();
+    finest = finest || s.finest_is_reference;
+  }
+  if (richardson)
+    f << " Against the Richardson extrapolate, the orders of the two finest pairs restate the extrapolation's own "
+         "order (equal for a constant dx ratio); only coarser pairs check it independently.";
+  if (finest)
+    f << " Against the finest run, that run's own error is undefined and the next runs' errors are only known to "
+         "within the reference's uncertainty.";
+  f << "\n\n";
   f << "## Advice\n\n";
   for (const auto& line : adviceLines(rows, o.metric, simulated)) f << "- " << line << "\n";
   f << "\n![error against cost](study.png)\n";

@@ -207,3 +207,27 @@ TEST(StudyAnalysis, ErrorsOrdersAndAdviceFromSyntheticRuns) {
   EXPECT_NE(far[3].find(expected), std::string::npos) << far[3];
   EXPECT_NE(far[3].find("extrapolated"), std::string::npos) << far[3];
 }
+
+TEST(StudyAnalysis, WithoutAnExtrapolateTheFinestRunIsTheReference) {
+  // The three finest values oscillate (0.26, 0.283, 0.282): no Richardson extrapolate.
+  std::vector<st::StudyRow> rows;
+  const double dx[] = {0.02, 0.01, 0.005, 0.0025}, value[] = {0.24, 0.26, 0.283, 0.282};
+  for (int k = 0; k < 4; ++k) {
+    st::StudyRow r;
+    r.dx = dx[k];
+    r.value = value[k];
+    r.wall_seconds = 0.1 * std::pow(8.0, k);
+    rows.push_back(r);
+  }
+  const auto s = st::analyseStudy(rows, std::nullopt, false, NAN);
+  ASSERT_EQ(s.size(), 1u);
+  EXPECT_TRUE(s[0].finest_is_reference);
+  EXPECT_DOUBLE_EQ(s[0].reference, 0.282);
+  EXPECT_NE(s[0].reference_source.find("differ by 0.35%"), std::string::npos) << s[0].reference_source;
+  EXPECT_TRUE(std::isnan(rows[3].error));
+  EXPECT_NEAR(rows[2].relative_error, 0.001 / 0.282, 1e-12);
+  EXPECT_NEAR(rows[1].order, std::log((0.282 - 0.24) / (0.282 - 0.26)) / std::log(2.0), 1e-12);
+  const auto advice = st::adviceLines(rows, "f", 1.0);
+  ASSERT_EQ(advice.size(), 4u);
+  EXPECT_NE(advice[3].find("within 1% use dx <= 0.005 m; it costs 6.4 s wall"), std::string::npos) << advice[3];
+}
