@@ -1,5 +1,6 @@
 #include <moorsph/fluid/forcing_region.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -9,6 +10,8 @@ template <int D>
 ForcingRegion<D>::ForcingRegion(ForcingRegionSpec spec, TargetField target, double max_dt)
     : spec_(spec), target_(std::move(target)), strength_(std::pow(10.0, spec.kappa) * spec.mu) {
   if (!(spec_.length > 0.0)) throw std::invalid_argument("forcing_region: length must be positive");
+  if (!(spec_.ramp_up >= 0.0)) throw std::invalid_argument("forcing_region: ramp_up must not be negative");
+  if (!(spec_.gain > 0.0)) throw std::invalid_argument("forcing_region: gain must be positive");
   if (!(spec_.still_level > spec_.floor + spec_.bottom_gap))
     throw std::invalid_argument("forcing_region: the still level must lie above the region's bottom");
   // Relaxation rate strength/rho; explicit stepping needs rate * dt < 1 (METHOD.md:
@@ -24,14 +27,23 @@ bool ForcingRegion<D>::contains(const Vec<D>& r) const {
 }
 
 template <int D>
+double ForcingRegion<D>::targetScale(double t) const {
+  if (t >= spec_.end_time) return 0.0;
+  const double ramp = t >= spec_.ramp_up ? 1.0 : 0.5 * (1.0 - std::cos(M_PI * std::max(t, 0.0) / spec_.ramp_up));
+  return spec_.gain * ramp;
+}
+
+template <int D>
 void ForcingRegion<D>::addRates(FluidContext<D>& ctx) {
   FluidParticles<D>& f = ctx.fluid;
   const std::size_t n = f.size();
   const double t = ctx.time;
+  if (t >= spec_.end_time) return;
+  const double scale = targetScale(t);
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i) {
     if (!contains(f.r[i])) continue;
-    const Eigen::Vector2d vc = target_(f.r[i][0], f.r[i][1] - spec_.floor, t);
+    const Eigen::Vector2d vc = scale * target_(f.r[i][0], f.r[i][1] - spec_.floor, t);
     const double rate = strength_ / f.rho[i];
     f.dvdt[i][0] += rate * (vc[0] - f.v[i][0]);
     f.dvdt[i][1] += rate * (vc[1] - f.v[i][1]);

@@ -15,13 +15,66 @@ double horizontalDistanceSquared(const Domain<D>& domain, const Vec<D>& line, co
   return d.squaredNorm();
 }
 
+// Wendland C2 with h = 1 (support 2): W(q) = alpha (2 - q)^4 (1 + 2q).
+template <int D>
+double unitKernel(double q) {
+  return q >= 2.0 ? 0.0 : WendlandKernel<D>::normalisation(1.0) * std::pow(2.0 - q, 4) * (1.0 + 2.0 * q);
+}
+
+// P(z): the unit kernel integrated over the line (2D) or plane (3D) at distance |z|
+// from its centre. 3D in closed form through q^2 = rho^2 + z^2: 2 pi int_|z|^2 q W dq;
+// 2D by Simpson's rule over the chord (the integrand is smooth: W is C2 and vanishes at 2).
+template <int D>
+double projectedKernel(double z) {
+  const double a = std::abs(z);
+  if (a >= 2.0) return 0.0;
+  constexpr int n = 200;  // even
+  double sum = 0.0;
+  if constexpr (D == 3) {
+    const double hq = (2.0 - a) / n;
+    for (int k = 0; k <= n; ++k) {
+      const double q = a + k * hq;
+      sum += (k == 0 || k == n ? 1.0 : (k % 2 ? 4.0 : 2.0)) * q * unitKernel<3>(q);
+    }
+    return 2.0 * M_PI * sum * hq / 3.0;
+  } else {
+    const double half_chord = std::sqrt(4.0 - a * a);
+    const double hx = half_chord / n;
+    for (int k = 0; k <= n; ++k) {
+      const double x = k * hx;
+      sum += (k == 0 || k == n ? 1.0 : (k % 2 ? 4.0 : 2.0)) * unitKernel<2>(std::sqrt(x * x + a * a));
+    }
+    return 2.0 * sum * hx / 3.0;
+  }
+}
+
 }  // namespace
+
+template <int D>
+double halfSpaceThresholdDepth(double threshold) {
+  if (!(threshold > 0.0 && threshold < 1.0)) throw std::invalid_argument("wave gauge: threshold must lie in (0, 1)");
+  // xi at depth s below the face = int_{-2}^{s} P(z) dz (P is even and integrates to 1):
+  // march s up from -2 by the trapezoidal rule until xi passes the threshold.
+  constexpr int n = 4000;
+  const double ds = 4.0 / n;
+  double xi = 0.0, p_prev = 0.0;
+  for (int k = 1; k <= n; ++k) {
+    const double s = -2.0 + k * ds;
+    const double p = projectedKernel<D>(s);
+    const double xi_next = xi + 0.5 * (p + p_prev) * ds;
+    if (xi_next >= threshold) return s - ds * (xi_next - threshold) / (xi_next - xi);
+    xi = xi_next;
+    p_prev = p;
+  }
+  return 2.0;
+}
 
 template <int D>
 WaveGauge<D>::WaveGauge(WaveGaugeSpec<D> spec) : spec_(std::move(spec)) {
   if (!(spec_.top > spec_.bottom)) throw std::invalid_argument("wave gauge: top must lie above bottom");
   if (!(spec_.threshold > 0.0)) throw std::invalid_argument("wave gauge: threshold must be positive");
   if (!(spec_.step_fraction > 0.0)) throw std::invalid_argument("wave gauge: step fraction must be positive");
+  edge_depth_ = spec_.volume_edge ? halfSpaceThresholdDepth<D>(spec_.threshold) : 0.0;
 }
 
 template <int D>
@@ -110,7 +163,8 @@ double WaveGauge<D>::searchDown(const WendlandKernel<D>& kernel, double dx) cons
     if (xi >= threshold) {
       // Linear interpolation of xi between the two samples that bracket xi_t.
       const double fraction = (threshold - xi_above) / (xi - xi_above);
-      return y_above - fraction * (y_above - y);
+      const double crossing = y_above - fraction * (y_above - y);
+      return std::min(spec_.top, crossing + edge_depth_ * kernel.h());
     }
     y_above = y;
     xi_above = xi;
@@ -129,5 +183,7 @@ double WaveGauge<D>::particleDensity(const FluidParticles<D>& fluid, const Domai
 
 template class WaveGauge<2>;
 template class WaveGauge<3>;
+template double halfSpaceThresholdDepth<2>(double);
+template double halfSpaceThresholdDepth<3>(double);
 
 }  // namespace moorsph::fluid

@@ -7,5 +7,7 @@ target_sources(moorsph_fluid PRIVATE
   ${CMAKE_CURRENT_LIST_DIR}/stokes2_wave.cpp
   ${CMAKE_CURRENT_LIST_DIR}/peregrine_breather.cpp
   ${CMAKE_CURRENT_LIST_DIR}/piston_transfer.cpp
-  ${CMAKE_CURRENT_LIST_DIR}/piston_signal.cpp)
+  ${CMAKE_CURRENT_LIST_DIR}/piston_signal.cpp
+  # Active amplitude correction of a wave maker (issue 6, item 5).
+  ${CMAKE_CURRENT_LIST_DIR}/wave_height_controller.cpp)
 target_link_libraries(moorsph_fluid PUBLIC Eigen3::Eigen)

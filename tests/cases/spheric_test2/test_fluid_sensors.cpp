@@ -8,8 +8,12 @@
 //   xi (2D):          0.96   0.82   0.77   0.71   0.50
 //   xi (3D):          0.97   0.83   0.77   0.71   0.50
 // so xi_t = 0.8 is crossed 0.03-0.05 dx above the top row's centres, and xi = 0.5 at
-// the block's top face y_top + dx/2 (where the particles' volumes end). The gauge
-// must read these to 0.1 dx; a dry line reads its bottom.
+// the block's top face y_top + dx/2 (where the particles' volumes end). The plain
+// crossing (volume_edge = false) must read the former to 0.1 dx; the default gauge
+// adds the continuum half-space depth s(0.8) = 0.453 h (2D) and must read the still
+// level y_top + dx/2 to 0.1 dx (measured +0.05 dx between lattice columns, +0.09 dx
+// on one, +0.05 dx in 3D: the lattice sum of the kernel is 0.99-1.02, not 1); a dry
+// line reads its bottom.
 //
 // Pressure probe (METHOD.md section 2). In a tank of water at rest the floor carries
 // the weight: p = rho0 g H at the floor, H the depth (H = N_y dx for N_y lattice rows).
@@ -44,10 +48,14 @@ void expectStillLevel(double dx) {
   spec.bottom = 0.0;
   spec.top = 0.3;
   const double top_row = depth - 0.5 * dx;
+  EXPECT_NEAR(WaveGauge<D>(spec).read(water, domain, kernel, dx), depth, 0.1 * dx);
+  spec.volume_edge = false;
   EXPECT_NEAR(WaveGauge<D>(spec).read(water, domain, kernel, dx), top_row + 0.04 * dx, 0.1 * dx);
   spec.position = Vec<D>::Constant(0.1 + 0.5 * dx);  // on a lattice column
   EXPECT_NEAR(WaveGauge<D>(spec).read(water, domain, kernel, dx), top_row + 0.04 * dx, 0.1 * dx);
-  spec.threshold = 0.5;
+  spec.volume_edge = true;
+  EXPECT_NEAR(WaveGauge<D>(spec).read(water, domain, kernel, dx), depth, 0.1 * dx);
+  spec.threshold = 0.5;  // s(1/2) = 0: the crossing itself
   EXPECT_NEAR(WaveGauge<D>(spec).read(water, domain, kernel, dx), depth, 0.1 * dx);
 
   // A line away from the water (more than 2h from every particle) is dry.
@@ -84,7 +92,7 @@ TEST(WaveGauge, GridSearchEqualsScan3D) {
           << "gauge at x = " << g.spec().position[0] << ", t = " << sim.time();
   };
   compare();
-  EXPECT_NEAR(gauges[1].read(sim), 0.12 - 0.5 * tank.dx + 0.04 * tank.dx, 0.1 * tank.dx);
+  EXPECT_NEAR(gauges[1].read(sim), 0.12, 0.1 * tank.dx);  // the still level (volume_edge)
   for (int k = 0; k < 60; ++k) sim.step();  // the column starts to collapse
   compare();
 }

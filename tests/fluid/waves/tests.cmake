@@ -5,5 +5,13 @@ moorsph_add_gtest(NAME test_wave_theory
     ${CMAKE_CURRENT_LIST_DIR}/test_airy_stokes.cpp
     ${CMAKE_CURRENT_LIST_DIR}/test_peregrine_breather.cpp
     ${CMAKE_CURRENT_LIST_DIR}/test_piston_transfer.cpp
+    ${CMAKE_CURRENT_LIST_DIR}/test_wave_height_controller.cpp
   LIBS moorsph_fluid
   LABELS fast)
+# Short 2D wave-tank runs (forcing region, damping zone, gauges) against theory.
+if(TARGET moorsph_wave_tanks)
+  moorsph_add_gtest(NAME test_wave_tanks
+    SOURCES ${CMAKE_CURRENT_LIST_DIR}/test_wave_tanks.cpp
+    LIBS moorsph_wave_tanks
+    LABELS fast)
+endif()

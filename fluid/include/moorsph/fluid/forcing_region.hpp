@@ -6,6 +6,7 @@
 // i.e. a relaxation at rate 10^kappa mu / rho_i [1/s] (10 1/s for water). The target is
 // an Airy or Stokes 2nd-order field (fluid/waves), with y measured up from the floor.
 #include <functional>
+#include <limits>
 #include <moorsph/fluid/counted.hpp>
 #include <moorsph/fluid/fluid_effect.hpp>
 
@@ -19,6 +20,15 @@ struct ForcingRegionSpec {
   double still_level = 1.0;  ///< y of the still surface [m]
   double kappa = 7.0;
   double mu = 1.0e-3;        ///< dynamic viscosity in the forcing law [Pa s]
+  /// The target is multiplied by the half-cosine ramp (1 - cos(pi t / ramp_up)) / 2 for
+  /// t < ramp_up [s], so the water is not jerked from rest (0: no ramp, METHOD.md).
+  double ramp_up = 0.0;
+  /// The forcing stops at this time [s] (infinity: never); a free-decay run switches
+  /// the maker off once the wave is made.
+  double end_time = std::numeric_limits<double>::infinity();
+  /// Multiplies the target velocity (the amplitude calibration of issue 6 item 5,
+  /// see wave_height_controller.hpp); 1 is the reference.
+  double gain = 1.0;
 };
 
 template <int D>
@@ -31,6 +41,11 @@ class ForcingRegion final : public FluidEffect<D>, public Counted<ForcingRegion<
   const char* name() const override { return "forcing_region"; }
   void addRates(FluidContext<D>& ctx) override;
   bool contains(const Vec<D>& r) const;
+  /// Factor on the target at time t: gain x ramp (0 after end_time).
+  double targetScale(double t) const;
+  /// Change the gain during a run (active correction from a gauge).
+  void setGain(double gain) { spec_.gain = gain; }
+  double gain() const { return spec_.gain; }
 
  private:
   ForcingRegionSpec spec_;

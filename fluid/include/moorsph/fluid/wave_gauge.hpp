@@ -13,6 +13,17 @@
 // the walls' b_off = 0.5 this threshold puts the surface of a still lattice block
 // where its particles' volumes end (half a spacing above the top row).
 //
+// The crossing of xi_t = 0.8 is not the surface itself: xi falls to 1/2 where the
+// water's volume ends and reaches 0.8 only some way below it (a still lattice block
+// crosses 0.8 at its top row's centres, dx/2 under the still level). By default the
+// gauge therefore adds the depth s(xi_t) at which a uniform half space of water has
+// xi = xi_t, so a still surface reads the still level (the water volume over the
+// width) rather than dx/2 low:
+//   xi(s) = 1/2 + int_0^s P(z) dz,   P(z) = the kernel integrated over a plane
+// (2D: a line) at distance z, a property of the kernel alone: s(0.8) = 0.453 h in
+// 2D, 0.446 h in 3D (0.54 dx for h = 1.2 dx). `volume_edge = false` gives the plain crossing
+// (the METHOD.md reading, reference preset).
+//
 // If no sample reaches xi_t the line is dry and the gauge reports its bottom height.
 // Heights are absolute y [m] (y is up); subtract the floor height for a depth.
 //
@@ -36,7 +47,13 @@ struct WaveGaugeSpec {
   double top = 1.0;                  ///< height where the downward search starts [m]
   double threshold = 0.8;            ///< xi_t (METHOD.md section 3)
   double step_fraction = 0.1;        ///< search step in units of dx
+  bool volume_edge = true;           ///< report the crossing + s(xi_t) (see above)
 };
+
+/// s(xi_t) / h: the depth below the plane face of a uniform half space of water at
+/// which the Wendland particle density reaches xi_t (negative above it for xi_t < 1/2).
+template <int D>
+double halfSpaceThresholdDepth(double threshold);
 
 template <int D>
 class WaveGauge {
@@ -68,6 +85,7 @@ class WaveGauge {
   void addCandidate(const FluidParticles<D>& fluid, const Domain<D>& domain, double support, std::size_t i) const;
 
   WaveGaugeSpec<D> spec_;
+  double edge_depth_ = 0.0;  // s(xi_t) / h added to the crossing (volume_edge)
   // Scratch reused between readings (a reading is not thread safe).
   mutable std::vector<Candidate> candidates_;
   mutable std::vector<std::uint32_t> cells_;
