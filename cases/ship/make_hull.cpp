@@ -4,7 +4,8 @@
 //
 //   moorsph_make_hull [--out hull.stl] [--deck deck.csv] [--max-edge 2.5]
 //                     [--length L --beam B --depth D --draught T --section-exponent n
-//                      --entrance Le --run Lr --entrance-exponent pe --run-exponent pr]
+//                      --entrance Le --run Lr --entrance-exponent pe --run-exponent pr
+//                      --transom t]
 // Any shape option switches from the preset to the given parameters (the rest keep the
 // preset's fitted values); the report then still uses the preset's mass and CoM.
 #include <cstdio>
@@ -29,9 +30,9 @@ void report(const io::ShipPreset& ship, const io::HullParameters& h, const io::T
   const double rho = ship.water_density, m = ship.mass;
   const double kg = ship.centre_of_mass.y();
   std::printf("hull: L %.2f m, B %.2f m, D %.2f m, T %.2f m\n", h.length, h.beam, h.depth, h.draught);
-  std::printf("shape: section exponent n %.4f (C_s %.4f), entrance %.2f m exponent %.4f, run %.2f m exponent %.4f\n",
+  std::printf("shape: section exponent n %.4f (C_s %.4f), entrance %.2f m exponent %.4f, run %.2f m exponent %.4f, transom %.4f B\n",
               h.section_exponent, io::sectionCoefficient(h.section_exponent), h.entrance_length, h.entrance_exponent,
-              h.run_length, h.run_exponent);
+              h.run_length, h.run_exponent, h.transom_fraction);
   std::printf("mesh: %zu vertices, %zu triangles, %d edges, closed %s (open %d, non-manifold %d, misoriented %d)\n",
               mesh.vertices.size(), mesh.triangles.size(), edges.edges, edges.closed() ? "yes" : "NO", edges.open_edges,
               edges.overused_edges, edges.same_direction);
@@ -78,7 +79,8 @@ int main(int argc, char** argv) {
     const std::map<std::string, double*> fields{
         {"length", &h.length}, {"beam", &h.beam}, {"depth", &h.depth}, {"draught", &h.draught},
         {"section-exponent", &h.section_exponent}, {"entrance", &h.entrance_length}, {"run", &h.run_length},
-        {"entrance-exponent", &h.entrance_exponent}, {"run-exponent", &h.run_exponent}};
+        {"entrance-exponent", &h.entrance_exponent}, {"run-exponent", &h.run_exponent},
+        {"transom", &h.transom_fraction}};
     for (const auto& [key, value] : opt) {
       const auto it = fields.find(key);
       if (it == fields.end()) throw std::invalid_argument("unknown option '--" + key + "'");

@@ -18,6 +18,7 @@ void validate(const HullParameters& p) {
   require(p.draught > 0.0 && p.depth >= p.draught, "'draught' must be > 0 and 'depth' >= 'draught'");
   require(p.section_exponent >= 1.0, "'section_exponent' must be >= 1 (1 is a V section)");
   require(p.entrance_exponent >= 1.0 && p.run_exponent >= 1.0, "'entrance_exponent' and 'run_exponent' must be >= 1");
+  require(p.transom_fraction >= 0.0 && p.transom_fraction <= 1.0, "'transom_fraction' must be in [0, 1]");
   require(p.entrance_length >= 0.0 && p.run_length >= 0.0 && p.entrance_length + p.run_length <= p.length,
           "'entrance_length' and 'run_length' must be >= 0 and add up to at most 'length'");
 }
@@ -26,7 +27,10 @@ double waterlineFraction(const HullParameters& p, double x) {
   if (x < 0.0 || x > p.length) return 0.0;
   if (x < p.entrance_length) return 1.0 - std::pow(1.0 - x / p.entrance_length, p.entrance_exponent);
   const double from_stern = p.length - x;
-  if (from_stern < p.run_length) return 1.0 - std::pow(1.0 - from_stern / p.run_length, p.run_exponent);
+  if (from_stern < p.run_length) {
+    const double t = p.transom_fraction;
+    return t + (1.0 - t) * (1.0 - std::pow(1.0 - from_stern / p.run_length, p.run_exponent));
+  }
   return 1.0;
 }
 
@@ -149,20 +153,22 @@ std::vector<Eigen::Vector3d> deckOutline(const HullParameters& p, double max_edg
 
 namespace {
 
-/// Bisection for an increasing f on [lo, hi] in log space; nullopt when f(lo), f(hi)
-/// do not bracket 0 (sign of the miss in `miss`: -1 target below the range, +1 above).
-std::optional<double> solveIncreasing(const std::function<double(double)>& f, double lo, double hi, int* miss = nullptr) {
+/// Bisection for an increasing f on [lo, hi] (in log space when `log`); nullopt when f(lo),
+/// f(hi) do not bracket 0 (sign of the miss in `miss`: -1 target below the range, +1 above).
+std::optional<double> solveIncreasing(const std::function<double(double)>& f, double lo, double hi, int* miss = nullptr,
+                                      bool log = true) {
   double flo = f(lo), fhi = f(hi);
   if (flo > 0.0 || fhi < 0.0) {
     if (miss) *miss = flo > 0.0 ? -1 : 1;
     return std::nullopt;
   }
+  auto middle = [&] { return log ? std::sqrt(lo * hi) : 0.5 * (lo + hi); };
   for (int it = 0; it < 60; ++it) {
-    const double mid = std::sqrt(lo * hi);
+    const double mid = middle();
     if (f(mid) < 0.0) lo = mid;
     else hi = mid;
   }
-  return std::sqrt(lo * hi);
+  return middle();
 }
 
 /// Waterplane area and centre of floatation of the mesh at y = T: its waterline is the
@@ -185,30 +191,33 @@ HullParameters fitHull(HullParameters p, const HullTargets& targets, double max_
   validate(p);
   const std::vector<double> xs = stations(p, max_edge);
   const double awp = targets.waterplane_area;
-  auto area_miss = [&](double pe, double pr) {
-    p.entrance_exponent = pe;
-    p.run_exponent = pr;
-    return waterplane(p, xs).first - awp;
-  };
   if (!targets.lcb_from_bow) {
-    const auto q = solveIncreasing([&](double e) { return area_miss(e, e); }, kLow, kHigh);
+    auto area_miss = [&](double e) {
+      p.entrance_exponent = p.run_exponent = e;
+      return waterplane(p, xs).first - awp;
+    };
+    const auto q = solveIncreasing(area_miss, kLow, kHigh);
     if (!q) throw std::invalid_argument("hull fit: waterplane area " + std::to_string(awp) + " m^2 not reachable with exponents in [1, 1000] for this entrance and run");
     p.entrance_exponent = p.run_exponent = *q;
   } else {
-    // A fuller run (larger p_r) with the entrance re-solved for the area moves the centre
-    // of floatation aft: bisection on p_r, the miss of an unreachable area counting as
-    // "too far aft" (p_r too large) or "too far forward".
-    auto lcf_miss = [&](double pr) {
+    // A wider transom with the entrance re-solved for the area (finer) moves the centre of
+    // floatation aft: bisection on t, an unreachable area counting as "too far aft" (t too
+    // large: too full even with a wedge entrance) or "too far forward".
+    auto lcf_miss = [&](double t) {
+      p.transom_fraction = t;
+      auto area_miss = [&](double e) {
+        p.entrance_exponent = e;
+        return waterplane(p, xs).first - awp;
+      };
       int miss = 0;
-      const auto pe = solveIncreasing([&](double e) { return area_miss(e, pr); }, kLow, kHigh, &miss);
+      const auto pe = solveIncreasing(area_miss, kLow, kHigh, &miss);
       if (!pe) return miss < 0 ? 1e9 : -1e9;
       p.entrance_exponent = *pe;
-      p.run_exponent = pr;
       return waterplane(p, xs).second - *targets.lcb_from_bow;
     };
-    const auto pr = solveIncreasing(lcf_miss, kLow, kHigh);
-    if (!pr) throw std::invalid_argument("hull fit: centre of buoyancy " + std::to_string(*targets.lcb_from_bow) + " m from the bow not reachable with this entrance and run");
-    lcf_miss(*pr);  // leaves p_e, p_r at the solution
+    const auto t = solveIncreasing(lcf_miss, 0.0, 1.0, nullptr, false);
+    if (!t) throw std::invalid_argument("hull fit: centre of buoyancy " + std::to_string(*targets.lcb_from_bow) + " m from the bow not reachable with this entrance and run");
+    lcf_miss(*t);  // leaves t and p_e at the solution
   }
   // Volume grows with the section exponent (C_s from 1/2 at n = 1 toward 1).
   auto volume_miss = [&](double n) {
@@ -229,7 +238,8 @@ ShipPreset section65Ship(double max_edge) {
   s.hull.depth = 23.5;
   s.hull.draught = 12.0;
   s.hull.entrance_length = 0.40 * s.hull.length;
-  s.hull.run_length = 0.10 * s.hull.length;
+  s.hull.run_length = 0.15 * s.hull.length;
+  s.hull.run_exponent = 2.0;
   s.targets.displaced_volume = 55000.0;
   // Sinkage 0.137 m per 1000 t: rho A_wp * 0.137 m = 1e6 kg.
   s.targets.waterplane_area = 1e6 / (s.water_density * 0.137);

@@ -6,10 +6,11 @@
 // the piston; a point given "x toward the bow from the centre of mass" is x_hull = x_G - x.
 //
 // Shape (half-breadth = B/2 * waterline(x) * section):
-//  - waterline: w(x) = 1 - (1 - xi)^p over the entrance (xi = x / L_e from the bow, exponent
-//    p_e) and the run (xi = (L - x) / L_r from the stern, exponent p_r), 1 in between
-//    (parallel middle body). p = 1 is a wedge, 2 a parabola, large p a blunt end; an
-//    entrance or run of length 0 gives a flat end (closed by a cap).
+//  - waterline: w(x) = 1 - (1 - xi)^p_e over the entrance (xi = x / L_e from the bow),
+//    w(x) = t + (1 - t) (1 - (1 - xi)^p_r) over the run (xi = (L - x) / L_r from the stern,
+//    t the transom's width fraction), 1 in between (parallel middle body). p = 1 is a
+//    wedge, 2 a parabola, large p a blunt end; a transom (t > 0) or an entrance or run of
+//    length 0 gives a flat end, closed by a cap.
 //  - sections below the draught T: a superellipse |z/(B w/2)|^n + |(T - y)/T|^n = 1
 //    (n = 1 a V, 2 an ellipse, large n a box with a sharp bilge); its area coefficient is
 //    Gamma(1 + 1/n)^2 / Gamma(1 + 2/n). Above T the sides are vertical up to the flat
@@ -36,6 +37,7 @@ struct HullParameters {
   double run_length = 0.0;          ///< L_r [m]
   double entrance_exponent = 2.0;   ///< p_e >= 1
   double run_exponent = 2.0;        ///< p_r >= 1
+  double transom_fraction = 0.0;    ///< t in [0, 1]: stern width / B (0 a pointed stern)
 };
 
 /// Throws std::invalid_argument naming the offending parameter.
@@ -62,11 +64,12 @@ struct HullTargets {
   std::optional<double> lcb_from_bow; ///< x of the centre of buoyancy [m]; absent: p_e = p_r
 };
 
-/// Solves the mesh's own figures (at this max_edge) for the targets: the waterline
-/// exponents for A_wp (and the centre of floatation = LCB when lcb_from_bow is given, the
-/// run exponent then found by bisection with the entrance exponent solved inside), then
-/// the section exponent n for the volume. Throws std::invalid_argument when a target
-/// cannot be reached with the given L_e, L_r (exponents searched in [1, 1000]).
+/// Solves the mesh's own figures (at this max_edge) for the targets: the waterline for A_wp
+/// (without lcb_from_bow: one exponent p_e = p_r; with it: the transom fraction t found by
+/// bisection so that the centre of floatation, which is the LCB of this separable shape,
+/// lies there, with p_e solved for the area inside and p_r kept), then the section exponent
+/// n for the volume. Throws std::invalid_argument when a target cannot be reached with the
+/// given L_e, L_r (exponents searched in [1, 1000], t in [0, 1]).
 HullParameters fitHull(HullParameters p, const HullTargets& targets, double max_edge);
 
 /// METHOD.md section 6.5 ship, in the hull frame.
@@ -84,7 +87,7 @@ struct ShipPreset {
 /// The section 6.5 targets: displaced volume 55,000 m^3 (weight plus the cables' pull);
 /// A_wp = 1000 t / (rho 0.137 m) from the sinkage figure; LCB where buoyancy balances the
 /// weight at x_G and the cables' vertical pull (the buoyancy surplus) at the fairleads, so
-/// the ship floats without trim. Entrance 0.40 L and run 0.10 L, exponents and n fitted.
+/// the ship floats without trim. Entrance 0.40 L, parabolic run 0.15 L; p_e, t and n fitted.
 /// Inertia from the usual radii of gyration k_roll = 0.35 B, k_pitch = k_yaw = 0.25 L.
 ShipPreset section65Ship(double max_edge = 2.5);
 
