@@ -4,6 +4,7 @@
 #include <cmath>
 #include <sstream>
 #include <moorsph/fluid/gravity.hpp>
+#include <moorsph/fluid/run_guard.hpp>
 
 namespace moorsph::fluid {
 namespace {
@@ -177,26 +178,16 @@ void FluidSimulation<D>::advanceTo(double t) {
   while (time_ < t) step();
 }
 
-// One O(N) pass: any NaN, or a fluid particle outside the domain, stops the run
-// with the first offender named.
+// Runtime guards (run_guard.hpp): one O(N) pass finds the first particle that is
+// non-finite, outside the domain or at rho <= 0; then the step just taken is compared
+// with the CFL step. Either stops the run with the particle, time and likely cause named.
 template <int D>
 void FluidSimulation<D>::checkHealth() const {
-  const FluidParticles<D>& f = fluid_;
-  const std::size_t n = f.size();
-  std::size_t bad = n;
-#pragma omp parallel for schedule(static) reduction(min : bad)
-  for (std::size_t i = 0; i < n; ++i) {
-    const bool finite = f.r[i].allFinite() && f.v[i].allFinite() && std::isfinite(f.rho[i]);
-    if (!finite || !setup_.domain.contains(f.r[i]) || !(f.rho[i] > 0.0)) bad = std::min(bad, i);
-  }
-  if (bad == n) return;
-  std::ostringstream os;
-  const bool finite = f.r[bad].allFinite() && f.v[bad].allFinite() && std::isfinite(f.rho[bad]);
-  os << (finite ? "fluid particle left the domain" : "non-finite fluid state") << " at t = " << time_
-     << " s (step " << steps_ << "): particle id " << f.id[bad] << " at r = (" << f.r[bad].transpose()
-     << ") m, v = (" << f.v[bad].transpose() << ") m/s, rho = " << f.rho[bad] << " kg/m^3; domain ("
-     << setup_.domain.lower.transpose() << ") .. (" << setup_.domain.upper.transpose() << ") m";
-  throw SimulationError(os.str());
+  const GuardContext<D> ctx{setup_, walls_, time_, steps_};
+  const std::size_t bad = findUnhealthyParticle(fluid_, setup_.domain);
+  if (bad < fluid_.size()) throw SimulationError(describeUnhealthyParticle(fluid_, bad, ctx));
+  if (dt_ < setup_.method.min_dt_fraction * cfl_dt_)
+    throw SimulationError(describeDtCollapse(fluid_, dt_, cfl_dt_, ctx));
 }
 
 template <int D>

@@ -26,8 +26,10 @@
 
 namespace moorsph::fluid {
 
-/// Raised when a run goes wrong (NaN, a particle leaving the domain). The message
-/// names the particle, its state and the time.
+/// Raised when a run goes wrong (NaN/Inf, a particle leaving the domain, rho <= 0, a
+/// time step below method.min_dt_fraction x the CFL step; coupling/ adds a body
+/// leaving the domain). The message names the particle or body, its state, the time
+/// and the likely cause (run_guard.hpp).
 class SimulationError : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;

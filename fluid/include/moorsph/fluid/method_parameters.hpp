@@ -37,6 +37,9 @@ struct MethodParameters {
   double density_diffusion_delta = 0.1;
   DensityDiffusionForm density_diffusion_form = DensityDiffusionForm::Fourtakas;
   double skin_factor = 0.15;         ///< Verlet skin = skin_factor * 2h
+  /// Runtime guard, not part of the method: a step shorter than min_dt_fraction x the
+  /// CFL step (the step a fluid at rest takes) stops the run with a diagnostic. 0 disables it.
+  double min_dt_fraction = 1.0e-3;
 
   static MethodParameters reference() { return MethodParameters{}; }
 };

@@ -1,0 +1,182 @@
+#include <moorsph/fluid/run_guard.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+namespace moorsph::fluid {
+namespace {
+
+// The design speed of the weakly-compressible method: c_s >= 10 x the largest flow
+// speed keeps density variations near 1% (METHOD.md section 1).
+constexpr double kDesignMach = 0.1;
+
+template <int D>
+bool finiteState(const FluidParticles<D>& f, std::size_t i) {
+  return f.r[i].allFinite() && f.v[i].allFinite() && std::isfinite(f.rho[i]);
+}
+
+/// The boundary surface nearest to r (brute force: only called when a run fails).
+struct NearestSurface {
+  std::string name;
+  double distance = std::numeric_limits<double>::infinity();
+};
+
+template <int D>
+NearestSurface nearestSurface(const Walls<D>* walls, const Vec<D>& r) {
+  NearestSurface out;
+  if (!walls || !r.allFinite()) return out;
+  const BoundaryParticles<D>& b = walls->particles();
+  std::size_t best = b.size();
+  for (std::size_t k = 0; k < b.size(); ++k) {
+    const double d = (b.r[k] - r).norm();
+    if (d < out.distance) {
+      out.distance = d;
+      best = k;
+    }
+  }
+  if (best < b.size()) out.name = walls->surfaces()[b.surface[best]].name;
+  return out;
+}
+
+template <int D>
+double maxSpeed(const std::vector<Vec<D>>& velocities) {
+  double v2 = 0.0;
+  for (const Vec<D>& v : velocities)
+    if (v.allFinite()) v2 = std::max(v2, v.squaredNorm());
+  return std::sqrt(v2);
+}
+
+template <int D>
+std::size_t densest(const FluidParticles<D>& f) {
+  std::size_t best = 0;
+  for (std::size_t i = 1; i < f.size(); ++i)
+    if (f.rho[i] > f.rho[best]) best = i;
+  return best;
+}
+
+template <int D>
+void describeParticle(std::ostream& os, const FluidParticles<D>& f, std::size_t i, const GuardContext<D>& ctx) {
+  const double speed = f.v[i].norm();
+  os << " at t = " << ctx.time << " s (step " << ctx.step << "): particle id " << f.id[i] << " at r = ("
+     << f.r[i].transpose() << ") m, v = (" << f.v[i].transpose() << ") m/s (|v| = " << speed << " m/s = "
+     << speed / ctx.setup.sound_speed << " c_s), rho = " << f.rho[i] << " kg/m^3";
+  const NearestSurface s = nearestSurface(ctx.walls, f.r[i]);
+  if (!s.name.empty()) os << "; nearest boundary surface '" << s.name << "' at " << s.distance << " m";
+}
+
+/// Likely cause of a particle found behind or beyond a wall.
+template <int D>
+void causeOfEscape(std::ostream& os, const FluidParticles<D>& f, std::size_t i, const GuardContext<D>& ctx) {
+  const double c = ctx.setup.sound_speed;
+  const double speed = f.v[i].norm();
+  const double wall_speed = ctx.walls ? ctx.walls->maxMovingSpeed() : 0.0;
+  const NearestSurface s = nearestSurface(ctx.walls, f.r[i]);
+  const std::string wall = s.name.empty() ? "a wall" : "surface '" + s.name + "'";
+  os << ". Likely cause: the particle passed through " << wall << ": ";
+  if (speed > kDesignMach * c)
+    os << "its speed " << speed << " m/s exceeds c_s/10 = " << kDesignMach * c
+       << " m/s, beyond what the wall force (scaled by c_s^2) can stop; raise sound_speed to at least 10x the "
+          "largest flow speed";
+  else if (wall_speed > kDesignMach * c)
+    os << "a moving surface (a body or piston) moves at " << wall_speed << " m/s, faster than c_s/10 = "
+       << kDesignMach * c << " m/s; raise sound_speed or slow the body";
+  else
+    os << "boundary particles sparser than the fluid spacing dx = " << ctx.setup.dx
+       << " m (check the boundary spacing of the surface) or a thin wall crossed at a corner";
+}
+
+}  // namespace
+
+template <int D>
+std::size_t findUnhealthyParticle(const FluidParticles<D>& f, const Domain<D>& domain) {
+  const std::size_t n = f.size();
+  std::size_t bad = n;
+#pragma omp parallel for schedule(static) reduction(min : bad)
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!finiteState(f, i) || !domain.contains(f.r[i]) || !(f.rho[i] > 0.0)) bad = std::min(bad, i);
+  }
+  return bad;
+}
+
+template <int D>
+std::size_t findLargestAcceleration(const FluidParticles<D>& f) {
+  std::size_t best = 0;
+  double a2 = -1.0;
+  for (std::size_t i = 0; i < f.size(); ++i) {
+    const double x = f.dvdt[i].squaredNorm();
+    if (x > a2) {
+      a2 = x;
+      best = i;
+    }
+  }
+  return best;
+}
+
+template <int D>
+std::string describeUnhealthyParticle(const FluidParticles<D>& f, std::size_t i, const GuardContext<D>& ctx) {
+  std::ostringstream os;
+  const Domain<D>& domain = ctx.setup.domain;
+  if (!finiteState(f, i)) {
+    os << "non-finite fluid state";
+    describeParticle(os, f, i, ctx);
+    const double vmax = maxSpeed<D>(f.v);
+    os << ". Likely cause: a blow-up that grew over the previous steps; the fastest finite particle moves at "
+       << vmax << " m/s (c_s/10 = " << kDesignMach * ctx.setup.sound_speed
+       << " m/s): if it exceeds c_s/10 raise sound_speed, otherwise a splash in tension (enable density_diffusion)";
+  } else if (!domain.contains(f.r[i])) {
+    os << "fluid particle left the domain";
+    describeParticle(os, f, i, ctx);
+    os << "; domain (" << domain.lower.transpose() << ") .. (" << domain.upper.transpose() << ") m";
+    causeOfEscape(os, f, i, ctx);
+  } else {
+    os << "non-positive fluid density";
+    describeParticle(os, f, i, ctx);
+    os << ". Likely cause: the fluid there is in tension (a splash sheet or a free surface pulled apart): the "
+          "continuity equation drove rho through zero. Enable density_diffusion (method option), which removes the "
+          "density noise that starts it, or refine dx";
+  }
+  return os.str();
+}
+
+template <int D>
+std::string describeDtCollapse(const FluidParticles<D>& f, double dt, double cfl_dt, const GuardContext<D>& ctx) {
+  const std::size_t i = findLargestAcceleration(f);
+  const std::size_t j = densest(f);
+  const double c = ctx.setup.sound_speed;
+  // The flow speed before the collapsing step (the step itself can fling particles).
+  const double vmax = maxSpeed<D>(f.v_start.size() == f.size() ? f.v_start : f.v);
+  std::ostringstream os;
+  os << "time step collapsed: dt = " << dt << " s is below min_dt_fraction = " << ctx.setup.method.min_dt_fraction
+     << " of the CFL step " << cfl_dt << " s; largest acceleration |a| = " << f.dvdt[i].norm() << " m/s^2";
+  describeParticle(os, f, i, ctx);
+  os << "; densest particle id " << f.id[j] << " at r = (" << f.r[j].transpose() << ") m, rho = " << f.rho[j]
+     << " kg/m^3 = " << f.rho[j] / ctx.setup.rho0 << " rho0. Likely cause: ";
+  if (vmax > kDesignMach * c) {
+    os << "the flow speed before the step, " << vmax << " m/s, exceeds c_s/10 = " << kDesignMach * c
+       << " m/s, so the fluid is compressed far beyond the weakly-compressible range; raise sound_speed to at least "
+       << 10.0 * vmax << " m/s";
+  } else {
+    const NearestSurface s = nearestSurface(ctx.walls, f.r[j]);
+    if (!s.name.empty() && s.distance < 2.0 * ctx.setup.h())
+      os << "the densest particle is squeezed against surface '" << s.name << "' (" << s.distance / ctx.setup.dx
+         << " dx away): a body or wall closing on the fluid faster than it can escape, or boundary particles "
+            "sparser than dx";
+    else
+      os << "the densest particle is over-compressed inside the fluid (colliding jets or a trapped pocket), "
+            "beyond the weakly-compressible range; raise sound_speed or enable density_diffusion";
+  }
+  return os.str();
+}
+
+template std::size_t findUnhealthyParticle<2>(const FluidParticles<2>&, const Domain<2>&);
+template std::size_t findUnhealthyParticle<3>(const FluidParticles<3>&, const Domain<3>&);
+template std::size_t findLargestAcceleration<2>(const FluidParticles<2>&);
+template std::size_t findLargestAcceleration<3>(const FluidParticles<3>&);
+template std::string describeUnhealthyParticle<2>(const FluidParticles<2>&, std::size_t, const GuardContext<2>&);
+template std::string describeUnhealthyParticle<3>(const FluidParticles<3>&, std::size_t, const GuardContext<3>&);
+template std::string describeDtCollapse<2>(const FluidParticles<2>&, double, double, const GuardContext<2>&);
+template std::string describeDtCollapse<3>(const FluidParticles<3>&, double, double, const GuardContext<3>&);
+
+}  // namespace moorsph::fluid
