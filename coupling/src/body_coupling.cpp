@@ -1,4 +1,5 @@
 #include <moorsph/coupling/body_coupling.hpp>
+#include <moorsph/coupling/body_guard.hpp>
 
 #include <cmath>
 #include <stdexcept>
@@ -43,6 +44,13 @@ BodyCoupling<D>::BodyCoupling(bodies::MultibodySystem& system, fluid::Walls<D>* 
 }
 
 template <int D>
+void BodyCoupling<D>::useFluidSetup(const fluid::FluidSetup<D>& setup) {
+  guard_domain_ = setup.domain;
+  guard_sound_speed_ = setup.sound_speed;
+  if (options_.wall_contact) contact_.emplace(*walls_, setup.rho0 * std::pow(setup.dx, D), setup.h());
+}
+
+template <int D>
 double BodyCoupling<D>::ramp(double t) const {
   const double s = t - options_.release_time;
   if (options_.ramp_time <= 0.0 || s >= options_.ramp_time) return 1.0;
@@ -65,6 +73,11 @@ void BodyCoupling<D>::applyFluidWrenches(double t) {
     const fluid::SurfaceWrench w = walls_->calcSurfaceWrench(links_[k].surface, origin);
     applied_[k].force = factor * w.force;
     applied_[k].torque = factor * w.torque;
+    if (contact_) {
+      const bodies::BodyWrench c = contact_->wrench(links_[k].surface, origin);
+      applied_[k].force += c.force;
+      applied_[k].torque += c.torque;
+    }
     system_.setExternalWrench(links_[k].body, applied_[k]);
   }
 }
@@ -86,6 +99,7 @@ void BodyCoupling<D>::advanceTo(double t, fluid::StepStage stage) {
       system_.advanceTo(t - options_.release_time);
       body_seconds_ += secondsSince(simbody_start);
       placeSurfaces(t, false);
+      if (guard_domain_) checkBodiesInDomain(system_, *walls_, links_, *guard_domain_, guard_sound_speed_, contact_.has_value(), t);
       break;
     }
   }

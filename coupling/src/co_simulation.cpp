@@ -11,6 +11,7 @@ CoSimulation<D>::CoSimulation(std::unique_ptr<fluid::FluidSimulation<D>> fluid,
     : fluid_(std::move(fluid)), bodies_(std::move(bodies)) {
   auto effect = std::make_unique<BodyCoupling<D>>(*bodies_, fluid_->updWalls(), std::move(links), options);
   coupling_ = effect.get();
+  coupling_->useFluidSetup(fluid_->setup());
   fluid_->addEffect(std::move(effect));
 }
 

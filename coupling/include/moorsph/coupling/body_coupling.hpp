@@ -21,8 +21,12 @@
 // settles around them); Simbody's clock starts at release. Over `ramp_time` after
 // release the fluid wrench is ramped up smoothly (half-cosine) from zero.
 #include <chrono>
+#include <optional>
 #include <vector>
 #include <moorsph/bodies/multibody_system.hpp>
+#include <moorsph/coupling/wall_contact.hpp>
+#include <moorsph/fluid/fluid_setup.hpp>
+#include <moorsph/fluid/domain.hpp>
 #include <moorsph/fluid/walls.hpp>
 
 namespace moorsph::coupling {
@@ -37,6 +41,9 @@ struct CoupledBody {
 struct CouplingOptions {
   double release_time = 0.0;  ///< bodies held until this fluid time [s]
   double ramp_time = 0.0;     ///< fluid wrench ramped from 0 to 1 over this time after release [s]
+  /// Bodies touching fixed walls are pushed back by the wall force law (wall_contact.hpp);
+  /// without it a body heavier than water sinks through the floor.
+  bool wall_contact = true;
 };
 
 template <int D>
@@ -56,6 +63,11 @@ class BodyCoupling final : public fluid::FluidEffect<D> {
   double bodySeconds() const { return body_seconds_; }        ///< wall time in Simbody
   double exchangeSeconds() const { return exchange_seconds_; }  ///< wall time in the exchange
   const CouplingOptions& options() const { return options_; }
+  /// What the coupling takes from the fluid's setup (CoSimulation calls it): the domain
+  /// and sound speed of the runtime guard (body_guard.hpp: after every body step a body
+  /// outside the domain, or with a non-finite state, stops the run) and, if
+  /// options.wall_contact, the scales of body-wall contact (wall_contact.hpp).
+  void useFluidSetup(const fluid::FluidSetup<D>& setup);
 
  private:
   void placeSurfaces(double t, bool extrapolate);
@@ -69,6 +81,9 @@ class BodyCoupling final : public fluid::FluidEffect<D> {
   std::vector<bodies::BodyWrench> applied_;
   double body_seconds_ = 0.0;
   double exchange_seconds_ = 0.0;
+  std::optional<fluid::Domain<D>> guard_domain_;
+  double guard_sound_speed_ = 0.0;
+  std::optional<WallContact<D>> contact_;
 };
 
 /// bodies kinematics -> the fluid's rigid motion (2D: the x-y components and the
