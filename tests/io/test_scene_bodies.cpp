@@ -221,3 +221,42 @@ TEST(SceneBodies, ExampleScenesLoad) {
     EXPECT_FALSE(c.bodies.empty());
   }
 }
+
+TEST(SceneBodies, MeshAndCylinderBodiesAreSampledInTheirBodyFrame) {
+  // The OBJ cylinder (R 0.05 m, y from 0 to 0.15 m) translated so its centre is the
+  // reference point; and the same cylinder as a primitive along y.
+  const char* dir = std::getenv("MOORSPH_SOURCE_DIR");
+  const std::string scene = std::string(dir ? dir : ".") + "/cases/body_test.yaml";  // meshes/ resolves beside it
+  std::string text = kBuoy;
+  text.replace(text.find("{sphere: {radius: 0.1015}}"), 26,
+               "{mesh: {file: meshes/cylinder.obj, translate: [0, -0.075, 0]}}");
+  text.replace(text.find("dx: 0.04"), 8, "dx: 0.02");
+  const io::SceneConfig mesh = io::loadSceneText(text, scene);
+  EXPECT_EQ(mesh.bodies[0].shape.kind, "mesh");
+  const auto built = io::buildScene<3>(mesh);
+  const Eigen::Vector3d centre(0.4, 0.5, 0.4);
+  const auto& b = built.scene.boundary.particles;
+  std::size_t n = 0;
+  for (std::size_t k = 0; k < b.size(); ++k) {
+    if (b.surface[k] != built.body_surfaces[0]) continue;
+    ++n;
+    const Eigen::Vector3d d = b.r[k] - centre;
+    EXPECT_LE(std::hypot(d.x(), d.z()), 0.05 + 1e-9);
+    EXPECT_LE(std::abs(d.y()), 0.075 + 1e-9);
+  }
+  // About one particle per spacing^2 of the surface (2 pi R L + 2 pi R^2 = 0.0628 m^2 -> ~157).
+  EXPECT_GT(n, 120u);
+  EXPECT_LT(n, 260u);
+  for (const auto& r : built.scene.fluid.r) {
+    const Eigen::Vector3d d = r - centre;
+    EXPECT_FALSE(std::hypot(d.x(), d.z()) < 0.05 && std::abs(d.y()) < 0.075) << "water inside the body at " << r.transpose();
+  }
+  text.replace(text.find("{mesh: {file: meshes/cylinder.obj, translate: [0, -0.075, 0]}}"), 62,
+               "{cylinder: {radius: 0.05, length: 0.15, axis: y}}");
+  const io::SceneConfig prim = io::loadSceneText(text, scene);
+  const auto again = io::buildScene<3>(prim);
+  for (const auto& r : again.scene.fluid.r) {
+    const Eigen::Vector3d d = r - centre;
+    EXPECT_FALSE(std::hypot(d.x(), d.z()) < 0.05 && std::abs(d.y()) < 0.075) << "water inside the body at " << r.transpose();
+  }
+}
