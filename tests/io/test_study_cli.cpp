@@ -41,6 +41,8 @@ effects: [pressure, viscosity, xsph, gravity, walls]
 geometry:
   - tank: {name: tank, lower: [0, 0], upper: [0.4, 0.3], lid: true}
   - water: {lower: [0, 0], upper: [0.1, 0.2]}
+gauges:
+  - {name: G_col, x: 0.05, top: 0.3}
 output: {interval: 0.01, particles_interval: 0.05, checkpoint_minutes: 0}
 )";
 
@@ -69,7 +71,7 @@ TEST(StudyCli, TwoResolutionsTwoCflNumbersWriteConsistentTablesAndPlot) {
   std::ofstream(scene) << kScene;
   const double reference = 0.2;
   const Result r = run("study " + scene + " --dx 0.01,0.02 --metric front_position --time 0.1 --reference 0.2 " +
-                       "--vary method.cfl=0.25,0.5 --threads 1 --out " + dir + "/study");
+                       "--vary method.cfl=0.25,0.5 --end 0.102 --threads 1 --out " + dir + "/study");
   ASSERT_EQ(r.code, 0) << r.output;
   const auto csv = readCsv(dir + "/study/study.csv");
   ASSERT_EQ(csv.size(), 5u) << r.output;
@@ -105,6 +107,19 @@ TEST(StudyCli, TwoResolutionsTwoCflNumbersWriteConsistentTablesAndPlot) {
                                "for front_position (method.cfl=0.5) within", "![error against cost](study.png)"})
     EXPECT_NE(text.find(expected), std::string::npos) << expected << "\n" << text;
   EXPECT_TRUE(std::filesystem::exists(dir + "/study/runs/00_dx0.02/series.h5"));
+  // Another metric on the same runs, read from a series.h5 column, without running again:
+  // the column's water level at x = a/2 falls from 2a, by less than 2a.
+  const Result gauge = run("study " + scene + " --dx 0.01,0.02 --metric peak_amplitude --series gauges/G_col --from 0 " +
+                           "--reference 0.1 --vary method.cfl=0.25,0.5 --end 0.102 --threads 1 --reuse --out " + dir + "/study");
+  ASSERT_EQ(gauge.code, 0) << gauge.output;
+  EXPECT_NE(gauge.output.find("study run 4/4: reusing the finished run"), std::string::npos) << gauge.output;
+  const auto drops = readCsv(dir + "/study/study.csv");
+  ASSERT_EQ(drops.size(), 5u);
+  for (std::size_t k = 1; k < drops.size(); ++k) {
+    EXPECT_EQ(drops[k][4], csv[k][4]) << "the reused run's steps";
+    EXPECT_GT(std::stod(drops[k][6]), 0.01);
+    EXPECT_LT(std::stod(drops[k][6]), 2.0 * a);
+  }
   if (std::system("/usr/bin/python3 -c 'import matplotlib' > /dev/null 2>&1") == 0) {
     std::ifstream png(dir + "/study/study.png", std::ios::binary);
     char magic[8] = {};
