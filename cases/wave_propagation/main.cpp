@@ -160,7 +160,16 @@ int main(int argc, char** argv) {
       csv << "\n";
       csv.precision(9);
     }
+    int updates_seen = 0;
     const auto write_row = [&](const cases::GaugeRecord& r) {
+      if (tank.controller && tank.controller->updates() != updates_seen) {
+        updates_seen = tank.controller->updates();
+        std::printf("control update %d at t = %.3f s: window height %.5g m -> gain %.4f\n", updates_seen, r.t.back(),
+                    tank.controller->lastHeight(), tank.controller->gainAt(r.t.back() + tank.period));
+        if (csv.is_open())
+          csv << "# control t=" << r.t.back() << " height=" << tank.controller->lastHeight()
+              << " gain=" << tank.controller->gainAt(r.t.back() + tank.period) << "\n";
+      }
       if (!csv.is_open()) return;
       csv << r.t.back();
       for (const auto& e : r.eta) csv << "," << e.back();

@@ -19,7 +19,7 @@ from wave_heights import group_speed, period_heights, read
 def main(out, t0, runs):
     fig, ax = plt.subplots(figsize=(7, 4.2))
     for spec in runs:
-        label, path = spec.split('=', 1)
+        label, path = spec.rsplit('=', 1)
         meta, t, xs, eta = read(path)
         cg, _ = group_speed(meta['T'], meta['depth'])
         rows = period_heights(t, eta, meta['T'], t0)

@@ -45,11 +45,17 @@ void addController(WaveTank& tank, const WaveTankControl& control, double height
   fluid::WaveHeightControllerSpec c;
   c.target_height = height;
   c.period = tank.period;
-  c.start_time = control.start_time > 0.0 ? control.start_time : ramp + tank.period;
+  c.start_time = control.start_time;
   c.update_periods = control.update_periods;
   c.beta = control.beta;
   c.initial_gain = gain;
   c.stop_time = control.stop_time;
+  // Each window waits until the wave made with the new gain has reached the farthest
+  // watched gauge (distance over the group speed), plus a period.
+  const double k = 2.0 * M_PI / tank.wavelength;
+  const double farthest = *std::max_element(control.gauges.begin(), control.gauges.end());
+  c.delay = std::max(0.0, farthest) / fluid::waves::groupSpeed(k, tank.depth, kG) + tank.period;
+  if (c.start_time < ramp + c.delay) c.start_time = ramp + c.delay;
   tank.controller = std::make_shared<fluid::WaveHeightController>(c);
   for (double x : control.gauges) {
     fluid::WaveGaugeSpec<2> g;

@@ -22,7 +22,7 @@ namespace moorsph::cases {
 /// `gauges` is not empty.
 struct WaveTankControl {
   std::vector<double> gauges;  ///< x [m] of the gauges the controller watches (relative to the maker)
-  double start_time = 0.0;     ///< [s]; 0: after the ramp-up plus one period
+  double start_time = 0.0;     ///< [s]; at least the ramp-up plus the delay (wave_tanks.cpp)
   int update_periods = 2;
   double beta = 0.5;
   double stop_time = 1e300;    ///< [s], gain held afterwards

@@ -11,6 +11,7 @@ WaveHeightController::WaveHeightController(WaveHeightControllerSpec spec)
     : spec_(spec), old_gain_(spec.initial_gain), new_gain_(spec.initial_gain), period_start_(spec.start_time) {
   if (!(spec_.target_height > 0.0)) throw std::invalid_argument("wave height controller: target height must be positive");
   if (!(spec_.period > 0.0)) throw std::invalid_argument("wave height controller: period must be positive");
+  if (!(spec_.delay >= 0.0)) throw std::invalid_argument("wave height controller: delay must not be negative");
   if (spec_.update_periods < 1) throw std::invalid_argument("wave height controller: window of at least one period");
   if (!(spec_.beta > 0.0 && spec_.beta <= 1.0)) throw std::invalid_argument("wave height controller: beta in (0, 1]");
   if (!(spec_.initial_gain > 0.0 && spec_.min_gain > 0.0 && spec_.max_gain >= spec_.min_gain))
@@ -39,7 +40,7 @@ void WaveHeightController::closePeriod() {
 }
 
 bool WaveHeightController::addSample(double t, const std::vector<double>& eta) {
-  if (t < spec_.start_time || eta.empty()) return false;
+  if (t < spec_.start_time || t < period_start_ || eta.empty()) return false;
   if (lo_.empty()) {
     lo_.assign(eta.size(), std::numeric_limits<double>::infinity());
     hi_.assign(eta.size(), -std::numeric_limits<double>::infinity());
@@ -60,6 +61,11 @@ bool WaveHeightController::addSample(double t, const std::vector<double>& eta) {
         change_time_ = t;
         ++updates_;
         updated = true;
+        // The next window opens once the new gain is in place and its wave has arrived.
+        period_start_ = t + spec_.period + spec_.delay;
+        std::fill(lo_.begin(), lo_.end(), std::numeric_limits<double>::infinity());
+        std::fill(hi_.begin(), hi_.end(), -std::numeric_limits<double>::infinity());
+        return updated;
       }
     }
   }

@@ -9,11 +9,12 @@
 //   that window (max - min per period and gauge, averaged),
 //     G_new = clamp(G_old (H_target / H_m)^beta, min_gain, max_gain),
 //
-// a multiplicative integral controller: at a fixed point H_m = H_target. beta < 1
-// damps the response to the delay between the maker and the gauges (about a period
-// plus the travel time); beta = 0.5 with two-period windows settles in a few windows.
-// The new gain is reached linearly over the next period (gainAt, gainRate), so a
-// piston's displacement G(t) X0(t) stays continuous.
+// a multiplicative integral controller: at a fixed point H_m = H_target. The new gain
+// is reached linearly over the next period (gainAt, gainRate), so a piston's
+// displacement G(t) X0(t) stays continuous, and the next window only opens `delay`
+// seconds after that (the time the changed wave needs to reach the gauges, e.g.
+// their distance from the maker over the group speed): each window then sees one
+// gain, and for a linear maker H = k G the error shrinks by (1 - beta) per update.
 //
 // Units: t [s], heights [m], the gain [-].
 #include <vector>
@@ -29,6 +30,7 @@ struct WaveHeightControllerSpec {
   double initial_gain = 1.0;   ///< e.g. a gain calibrated beforehand
   double min_gain = 0.5, max_gain = 2.5;
   double stop_time = 1e300;    ///< no updates after this time [s] (then G is held)
+  double delay = 0.0;          ///< wait after each gain change before the next window [s]
 };
 
 class WaveHeightController {
