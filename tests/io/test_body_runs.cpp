@@ -2,7 +2,7 @@
 // fluid-body co-simulation and writes the body's kinematics, the fluid wrench, line
 // tensions, the energy ledger and the coupling timers; a stop-and-restart continues
 // bit-identically (fluid and bodies); a restart may change a body's mass and a line's
-// stiffness.
+// stiffness; a body leaving the domain stops the run naming the body.
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 
@@ -175,6 +175,20 @@ TEST(BodyRuns, RestartMayChangeMassAndLineButNotTheBody) {
   bigger.restart = dir + "/first/checkpoint.h5";
   bigger.sets = {"bodies.0.shape.box.size=[0.3, 0.1]"};
   EXPECT_EQ(app::runScene(bigger), app::kBadInput);
+}
+
+TEST(BodyRuns, BodyLeavingTheDomainStopsTheRunNamingIt) {
+  const std::string dir = freshDir("moorsph_body_escape");
+  std::string text = kBox;
+  text.replace(text.find("coupling: {release_time: 0.05}"), 30, "coupling: {release_time: 0}");
+  const std::string scene = test::writeScene(dir + "/scene.yaml", text);
+  app::RunOptions o = options(scene, dir + "/run", 0.2);
+  o.sets = {"bodies.0.velocity=[0, 40]", "moorings.0.rest_length=5"};  // thrown up, line slack
+  EXPECT_EQ(app::runScene(o), app::kRunFailed);
+  const std::string error = slurp(dir + "/run/error.txt");
+  EXPECT_NE(error.find("left the domain"), std::string::npos) << error;
+  EXPECT_NE(error.find("body 'box'"), std::string::npos) << error;
+  EXPECT_TRUE(std::filesystem::exists(dir + "/run/failure.checkpoint.h5"));
 }
 
 TEST(BodyRuns, CheckListsBodiesAndLines) {
