@@ -223,10 +223,8 @@ TEST(BodyRuns, BodyExampleScenesRun) {
 TEST(BodyRuns, EveryMooringModelRunsByChangingOneWord) {
   // The catenary example's line, described once, run with each model word (released
   // at once so the line acts): a spring model derives k = EA / length, L0 = length.
-  // cable_path is left out: Simbody's CablePath crashes while the system is built in
-  // the current tree (tests/bodies cable_path_test crashes the same way).
   const std::string source = std::getenv("MOORSPH_SOURCE_DIR") ? std::getenv("MOORSPH_SOURCE_DIR") : ".";
-  for (const char* model : {"elastic_catenary", "lumped_mass", "tension_only_spring"}) {
+  for (const char* model : {"elastic_catenary", "lumped_mass", "tension_only_spring", "cable_path"}) {
     SCOPED_TRACE(model);
     const std::string out = testing::TempDir() + "moorsph_model_" + model;
     std::filesystem::remove_all(out);
