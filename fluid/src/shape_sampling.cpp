@@ -44,6 +44,31 @@ BoundaryParticles<3> sampleSphere<3>(const Vec<3>& centre, double radius, double
   return out;
 }
 
+// Latitude rings about the vertical (y) axis: a point at each pole, rings at polar
+// angles j pi / n, each with a multiple of 4 points at half-step azimuths. Every ring
+// is mirror-symmetric in x and in z about the centre, so a pressure field that
+// depends on height alone (hydrostatics, a flat free surface) sums to exactly zero
+// sideways force and zero torque about the centre; the Fibonacci lattice leaves a
+// residual of order 1e-3 of the buoyancy, enough to push a softly moored buoy
+// sideways by centimetres.
+BoundaryParticles<3> sampleSphereRings(const Vec<3>& centre, double radius, double spacing) {
+  checkSize(radius, spacing);
+  BoundaryParticles<3> out;
+  const int rings = std::max(2, static_cast<int>(std::ceil(kPi * radius / spacing)));
+  out.add(centre + Vec<3>(0.0, radius, 0.0), {Vec<3>(0.0, 1.0, 0.0)}, 0);
+  for (int j = 1; j < rings; ++j) {
+    const double polar = kPi * j / rings, ring_radius = std::sin(polar);
+    const int m = 4 * std::max(1, static_cast<int>(std::ceil(2.0 * kPi * radius * ring_radius / (4.0 * spacing))));
+    for (int k = 0; k < m; ++k) {
+      const double a = 2.0 * kPi * (k + 0.5) / m;
+      const Vec<3> normal(ring_radius * std::cos(a), std::cos(polar), ring_radius * std::sin(a));
+      out.add(centre + radius * normal, {normal}, 0);
+    }
+  }
+  out.add(centre + Vec<3>(0.0, -radius, 0.0), {Vec<3>(0.0, -1.0, 0.0)}, 0);
+  return out;
+}
+
 BoundaryParticles<3> sampleCylinder(const Vec<3>& axis_point, double radius, double z0, double z1, double spacing) {
   checkSize(radius, spacing);
   if (!(z1 > z0)) throw std::invalid_argument("cylinder length must be positive");

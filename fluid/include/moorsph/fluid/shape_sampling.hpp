@@ -12,6 +12,10 @@ namespace moorsph::fluid {
 template <int D>
 BoundaryParticles<D> sampleSphere(const Vec<D>& centre, double radius, double spacing);
 
+/// Sphere sampled on latitude rings about y, mirror-symmetric in x and z (3D only):
+/// no spurious sideways force or torque in a height-only pressure field.
+BoundaryParticles<3> sampleSphereRings(const Vec<3>& centre, double radius, double spacing);
+
 /// Closed circular cylinder, axis along z from z0 to z1 (3D only).
 BoundaryParticles<3> sampleCylinder(const Vec<3>& axis_point, double radius, double z0, double z1, double spacing);
 

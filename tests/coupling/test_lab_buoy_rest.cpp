@@ -1,0 +1,58 @@
+// The tethered lab buoy of METHOD 6.2 left at rest stays at rest (issue 5): drift of
+// less than 1 mm over 5 s. At the test resolution (D/6) the SPH equilibrium is a few
+// millimetres below the nominal half-submerged pose (the boundary offset makes the
+// floating sphere sit ~0.1 dx deep, see docs/validation/tethered-buoy.md), so the buoy
+// first settles onto it; the test then asserts there is no creep: the mean heave and
+// surge over 1-2 s and over 4-5 s after release differ by less than 1 mm, the tether
+// stays taut at its pretension (within the same few percent) and the buoy stays level.
+//
+// STATUS (session 2): FAILS, label slow, kept as the open defect it measures. With the
+// sphere on symmetric rings and the tank symmetric about the buoy the drift is
+// 1.37 mm (0.42, -1.09, -0.71) and the buoy rocks by up to 3.9 deg; with rotations
+// locked the drift is 1.05 mm; ten times the viscosity leaves the rocking at 4.2 deg
+// (drift 0.89 mm). On the Fibonacci sphere and an unaligned tank: 21 mm and 6 deg.
+// The rocking (roll/pitch about the low CoM, natural period ~0.36 s) is not damped by
+// viscosity, so it is fed by the method, not by the start: see
+// docs/validation/tethered-buoy.md.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <moorsph/cases/tethered_buoy.hpp>
+
+using namespace moorsph;
+
+TEST(LabBuoyAtRest, NoDriftOverFiveSeconds) {
+  cases::TetheredBuoyTank tank;
+  tank.release = cases::BuoyRelease::Rest;
+  tank.dx = 2.0 * tank.buoy.radius / 6.0;
+  tank.length = tank.width = std::round(0.6 / tank.dx) * tank.dx;  // lattice symmetric about the buoy
+  tank.depth = 0.4;
+  tank.release_time = 0.3;
+  auto scene = cases::buildTetheredBuoy(tank);
+  auto& co = *scene.co;
+  Eigen::Vector3d early = Eigen::Vector3d::Zero(), late = Eigen::Vector3d::Zero();
+  int n_early = 0, n_late = 0;
+  double tension_sum = 0.0, max_tilt = 0.0;
+  while (co.time() < tank.release_time + 5.0) {
+    co.step();
+    const double t = co.time() - tank.release_time;
+    const auto k = co.bodies().kinematics(0);
+    if (t > 1.0 && t <= 2.0) early += k.position, ++n_early;
+    if (t > 4.0) late += k.position, ++n_late, tension_sum += co.bodies().lineDiagnostics(0).fairleadTension;
+    if (t > 1.0) max_tilt = std::max(max_tilt, std::acos(std::min(1.0, (k.orientation * Eigen::Vector3d::UnitY()).y())));
+  }
+  early /= n_early;
+  late /= n_late;
+  const Eigen::Vector3d drift = late - early;
+  const double tension = tension_sum / n_late, pretension = tank.buoy.pretension();
+  std::printf("lab buoy at rest, D/6 (%zu particles): mean offset from the nominal rest %.2f mm (heave), "
+              "drift 1-2 s -> 4-5 s: (%.3f, %.3f, %.3f) mm; tension %.3f N (pretension %.3f N); max tilt %.2f deg\n",
+              scene.particles, 1e3 * (early[1] - scene.rest[1]), 1e3 * drift[0], 1e3 * drift[1], 1e3 * drift[2],
+              tension, pretension, max_tilt * 180.0 / std::acos(-1.0));
+  EXPECT_LT(drift.norm(), 1.0e-3);
+  // Settled within a quarter spacing of the nominal pose: the tension then differs from
+  // the pretension by at most k dx/4.
+  EXPECT_NEAR(tension, pretension, tank.buoy.stiffness * tank.dx / 4.0);
+  EXPECT_LT(max_tilt, 2.0 * std::acos(-1.0) / 180.0);
+}
