@@ -15,3 +15,10 @@ if(TARGET moorsph_wave_tanks)
     LIBS moorsph_wave_tanks
     LABELS fast)
 endif()
+# A free wave's period against the dispersion relation (about 25 CPU seconds).
+if(TARGET moorsph_wave_tanks)
+  moorsph_add_gtest(NAME test_wave_propagation
+    SOURCES ${CMAKE_CURRENT_LIST_DIR}/test_wave_propagation.cpp
+    LIBS moorsph_wave_tanks
+    LABELS slow)
+endif()
