@@ -126,10 +126,10 @@ std::unique_ptr<coupling::CoSimulation<D>> makeCoSimulation(const io::SceneConfi
   return std::make_unique<coupling::CoSimulation<D>>(std::move(fluid), std::move(system), std::move(links), options);
 }
 
-// ---- checkpoint packing: a version number, then the snapshot's fields in order ----
+// ---- checkpoint packing: a version number (2), then the snapshot's fields in order ----
 
 std::vector<double> packSnapshot(const bodies::SystemSnapshot& s) {
-  std::vector<double> out{1.0, s.time, static_cast<double>(s.bodies.size())};
+  std::vector<double> out{2.0, s.time, static_cast<double>(s.bodies.size())};
   auto put = [&](const Eigen::Vector3d& v) { out.insert(out.end(), {v.x(), v.y(), v.z()}); };
   for (const auto& k : s.bodies) {
     put(k.position);
@@ -146,7 +146,8 @@ std::vector<double> packSnapshot(const bodies::SystemSnapshot& s) {
   }
   out.push_back(static_cast<double>(s.lines.size()));
   for (const auto& l : s.lines) {
-    out.insert(out.end(), {l.broken ? 1.0 : 0.0, l.breakTime, l.cableDissipated, static_cast<double>(l.internalState.size())});
+    out.insert(out.end(), {l.broken ? 1.0 : 0.0, l.breakTime, l.breakTension, l.cableDissipated,
+                           static_cast<double>(l.internalState.size())});
     out.insert(out.end(), l.internalState.begin(), l.internalState.end());
   }
   out.insert(out.end(), {s.dissipated, s.externalWork});
@@ -164,7 +165,9 @@ bodies::SystemSnapshot unpackSnapshot(const std::vector<double>& in) {
     for (int k = 0; k < 3; ++k) v[k] = next();
     return v;
   };
-  if (next() != 1.0) throw std::runtime_error("checkpoint: unknown version of the bodies' state");
+  // Version 1 lacked the break tension.
+  const double version = next();
+  if (version != 1.0 && version != 2.0) throw std::runtime_error("checkpoint: unknown version of the bodies' state");
   bodies::SystemSnapshot s;
   s.time = next();
   s.bodies.resize(static_cast<std::size_t>(next()));
@@ -186,6 +189,7 @@ bodies::SystemSnapshot unpackSnapshot(const std::vector<double>& in) {
   for (auto& l : s.lines) {
     l.broken = next() != 0.0;
     l.breakTime = next();
+    if (version >= 2.0) l.breakTension = next();
     l.cableDissipated = next();
     l.internalState.resize(static_cast<std::size_t>(next()));
     for (auto& v : l.internalState) v = next();

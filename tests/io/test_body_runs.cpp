@@ -251,3 +251,40 @@ TEST(BodyRuns, RollPitchYawAreContinuousThroughZero) {
     EXPECT_LT((app::rollPitchYaw(q) - rpy).norm(), 1e-12) << rpy.transpose();
   }
 }
+
+TEST(BodyRuns, SnapshotPackingRoundTrips) {
+  // What a checkpoint keeps of the bodies: every field back exactly, a broken line's
+  // time and tension included.
+  bodies::SystemSnapshot s;
+  s.time = 1.25;
+  bodies::BodyKinematics k;
+  k.position = Eigen::Vector3d(0.1, 0.2, 0.3);
+  k.orientation = Eigen::Quaterniond(Eigen::AngleAxisd(0.3, Eigen::Vector3d(1, 2, 3).normalized()));
+  k.velocity = Eigen::Vector3d(-1, 0.5, 2);
+  k.angularVelocity = Eigen::Vector3d(0.01, -0.02, 0.03);
+  s.bodies = {k};
+  s.wrenches = {bodies::BodyWrench{Eigen::Vector3d(1, 2, 3), Eigen::Vector3d(4, 5, 6)}};
+  bodies::LineSnapshot l;
+  l.broken = true;
+  l.breakTime = 0.75;
+  l.breakTension = 12.5;
+  l.cableDissipated = 0.125;
+  l.internalState = {1.0, 2.0, 3.0};
+  s.lines = {l};
+  s.dissipated = 0.5;
+  s.externalWork = -0.25;
+  const bodies::SystemSnapshot r = app::unpackSnapshot(app::packSnapshot(s));
+  EXPECT_EQ(r.time, s.time);
+  EXPECT_EQ(r.bodies[0].position, k.position);
+  EXPECT_EQ(r.bodies[0].orientation.coeffs(), k.orientation.coeffs());
+  EXPECT_EQ(r.bodies[0].velocity, k.velocity);
+  EXPECT_EQ(r.bodies[0].angularVelocity, k.angularVelocity);
+  EXPECT_EQ(r.wrenches[0].torque, s.wrenches[0].torque);
+  EXPECT_TRUE(r.lines[0].broken);
+  EXPECT_EQ(r.lines[0].breakTime, 0.75);
+  EXPECT_EQ(r.lines[0].breakTension, 12.5);
+  EXPECT_EQ(r.lines[0].cableDissipated, 0.125);
+  EXPECT_EQ(r.lines[0].internalState, l.internalState);
+  EXPECT_EQ(r.dissipated, 0.5);
+  EXPECT_EQ(r.externalWork, -0.25);
+}
