@@ -1,0 +1,105 @@
+// moorsph_breather_signal: writes the piston displacement table (CSV t [s], X [m]) that makes a
+// Peregrine breather (METHOD.md section 4c) focused a given distance from the piston at a given
+// time, for a scene's `piston: {signal: {type: table, file: ...}}` (the scene reader has no
+// breather signal type; the table is how a scene gets one).
+//
+//   moorsph_breather_signal --order 1 --a0 4.5 --k0 0.013333 --focus-distance 200
+//        --focus-time 300 --depth 132 --still 30 --ramp 60 --duration 420 [--dt 0.1]
+//        --out signal.csv
+//
+// The piston stays at X = 0 for the first `still` seconds (the water and the moored body settle,
+// and a CI test can stop there), then the target elevation eta(-x_f, t - t_f) at the piston is
+// ramped up over `ramp` seconds (half cosine; the breather's background sea has its full
+// amplitude a0 everywhere, so an unramped start would jerk the piston) and converted to X(t) by
+// the linear piston transfer function, frequency by frequency
+// (fluid::waves::breatherPistonSignal). Components below half the carrier frequency are removed
+// (a piston cannot make a mean level; see piston_transfer.hpp, LOW-FREQUENCY LIMIT). The ramp
+// front travels at the group speed, so it must have left the tank before the focus time.
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <stdexcept>
+#include <string>
+
+#include <moorsph/fluid/waves/dispersion.hpp>
+#include <moorsph/fluid/waves/peregrine_breather.hpp>
+#include <moorsph/fluid/waves/piston_signal.hpp>
+
+using namespace moorsph::fluid::waves;
+
+namespace {
+
+std::map<std::string, std::string> parseArgs(int argc, char** argv) {
+  std::map<std::string, std::string> a;
+  for (int i = 1; i < argc; ++i) {
+    const std::string key = argv[i];
+    if (key.rfind("--", 0) != 0 || i + 1 >= argc) throw std::invalid_argument("expected --key value, got '" + key + "'");
+    a[key.substr(2)] = argv[++i];
+  }
+  return a;
+}
+
+double number(const std::map<std::string, std::string>& a, const std::string& key, double fallback = NAN) {
+  const auto it = a.find(key);
+  if (it == a.end()) {
+    if (std::isnan(fallback)) throw std::invalid_argument("missing --" + key);
+    return fallback;
+  }
+  return std::stod(it->second);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  try {
+    const auto a = parseArgs(argc, argv);
+    const int order = static_cast<int>(number(a, "order", 1));
+    const double a0 = number(a, "a0"), k0 = number(a, "k0"), xf = number(a, "focus-distance");
+    const double tf = number(a, "focus-time"), depth = number(a, "depth"), still = number(a, "still", 0.0);
+    const double ramp = number(a, "ramp"), duration = number(a, "duration"), dt = number(a, "dt", 0.1);
+    const auto out = a.count("out") ? a.at("out") : std::string("signal.csv");
+    if (!(still >= 0.0 && still + ramp < tf && tf < duration)) {
+      throw std::invalid_argument("need 0 <= still, still + ramp < focus-time < duration");
+    }
+    const PeregrineBreather breather(order, a0, k0);
+    const double f0 = breather.carrierAngularFrequency() / (2.0 * M_PI);
+    PistonFilterOptions filter;
+    filter.lowCutoffFrequency = 0.5 * f0;
+    filter.lowTaperWidth = 0.25 * f0;
+    filter.rampUpTime = ramp;
+    // Built from the end of the still phase: the record's time tau = t - still.
+    const UniformSeries x = breatherPistonSignal(breather, xf, tf - still, depth, duration - still, dt, filter);
+
+    std::ofstream f(out);
+    if (!f) throw std::runtime_error("cannot write " + out);
+    f << "t [s],X [m]\n";
+    char line[64];
+    double xmax = 0.0;
+    for (double t = 0.0; t < still - 1e-9; t += dt) {  // at rest before the waves
+      std::snprintf(line, sizeof line, "%.3f,%.6f\n", t, 0.0);
+      f << line;
+    }
+    for (std::size_t i = 0; i < x.values.size(); ++i) {
+      std::snprintf(line, sizeof line, "%.3f,%.6f\n", still + x.time(i), x.values[i]);
+      f << line;
+      xmax = std::max(xmax, std::abs(x.values[i]));
+    }
+    const double cg = 0.5 * breather.carrierAngularFrequency() / k0;  // deep-water group speed
+    std::printf("breather order %d: a0 %.3f m, k0 %.6f 1/m (wavelength %.1f m), a0 k0 %.4f, omega0 %.4f rad/s (period %.2f s)\n",
+                order, a0, k0, 2.0 * M_PI / k0, a0 * k0, breather.carrierAngularFrequency(),
+                2.0 * M_PI / breather.carrierAngularFrequency());
+    std::printf("depth %.2f m: k0 d = %.3f (deep-water NLS wants >= 1.75), H/S at the carrier %.4f\n", depth, k0 * depth,
+                pistonHeightToStroke(waveNumberFromAngularFrequency(breather.carrierAngularFrequency(), depth), depth));
+    std::printf("focus %.1f m from the piston at t = %.1f s (peak crest about %.1f m); still until %.1f s, ramp %.1f s\n", xf,
+                tf, breather.peakAmplification() * a0, still, ramp);
+    std::printf("largest |X| %.3f m; ramp front at the group speed %.2f m/s is %.0f m from the piston at the focus time\n",
+                xmax, cg, cg * (tf - still));
+    std::printf("wrote %s (%zu rows)\n", out.c_str(), x.values.size());
+    return 0;
+  } catch (const std::exception& e) {
+    std::cerr << "moorsph_breather_signal: " << e.what() << "\n";
+    return 1;
+  }
+}
