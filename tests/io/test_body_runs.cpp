@@ -4,6 +4,8 @@
 // bit-identically (fluid and bodies); a restart may change a body's mass and a line's
 // stiffness; a body leaving the domain stops the run naming the body.
 #include <gtest/gtest.h>
+
+#include "run_support.hpp"
 #include <sys/wait.h>
 
 #include <cmath>
@@ -22,6 +24,8 @@
 using namespace moorsph;
 
 namespace {
+
+using moorsph::test_support::freshDir;
 
 // The 2D floating box of tests/coupling at its Archimedes draught (m / (rho w) =
 // 0.05 m: centre at the still level 0.2 m), coarse, tethered to the floor by a
@@ -46,13 +50,6 @@ moorings:
 coupling: {release_time: 0.05}
 output: {interval: 0.01, checkpoint_minutes: 0}
 )";
-
-std::string freshDir(const std::string& name) {
-  const std::string dir = testing::TempDir() + name;
-  std::filesystem::remove_all(dir);
-  std::filesystem::create_directories(dir);
-  return dir;
-}
 
 app::RunOptions options(const std::string& scene, const std::string& out, double end) {
   app::RunOptions o;
@@ -243,7 +240,7 @@ TEST(BodyRuns, EveryMooringModelRunsByChangingOneWord) {
 TEST(BodyRuns, RollPitchYawAreContinuousThroughZero) {
   // R = Rz(yaw) Ry(pitch) Rx(roll) built from known angles gives them back, small
   // negative angles included (no jumps by pi in the series).
-  for (const Eigen::Vector3d rpy : {Eigen::Vector3d(0.1, -0.2, 0.3), Eigen::Vector3d(-0.004, 0.002, -0.001),
+  for (const Eigen::Vector3d& rpy : {Eigen::Vector3d(0.1, -0.2, 0.3), Eigen::Vector3d(-0.004, 0.002, -0.001),
                                     Eigen::Vector3d(2.5, 1.2, -3.0)}) {
     const Eigen::Quaterniond q = Eigen::AngleAxisd(rpy[2], Eigen::Vector3d::UnitZ()) *
                                  Eigen::AngleAxisd(rpy[1], Eigen::Vector3d::UnitY()) *

@@ -3,6 +3,8 @@
 // restarts; a failing run keeps its output and writes a failure checkpoint.
 #include <gtest/gtest.h>
 
+#include "run_support.hpp"
+
 #include <csignal>
 #include <filesystem>
 #include <fstream>
@@ -15,12 +17,7 @@ using namespace moorsph;
 
 namespace {
 
-std::string freshDir(const std::string& name) {
-  const std::string dir = testing::TempDir() + name;
-  std::filesystem::remove_all(dir);
-  std::filesystem::create_directories(dir);
-  return dir;
-}
+using moorsph::test_support::freshDir;
 
 app::RunOptions options(const std::string& scene, const std::string& out, double end) {
   app::RunOptions o;

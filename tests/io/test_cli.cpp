@@ -1,6 +1,8 @@
 // The moorsph command as a user runs it: check's report, exit codes, --set before the
 // scene path, export, and the progress line's contents.
 #include <gtest/gtest.h>
+
+#include "run_support.hpp"
 #include <sys/wait.h>
 
 #include <cstdio>
@@ -12,20 +14,9 @@
 
 namespace {
 
-struct Result {
-  int code = -1;
-  std::string output;
-};
+using Result = moorsph::test_support::CliResult;
 
-Result run(const std::string& arguments) {
-  Result r;
-  std::FILE* pipe = popen((std::string(MOORSPH_BINARY) + " " + arguments + " 2>&1").c_str(), "r");
-  char buffer[512];
-  while (pipe && std::fgets(buffer, sizeof buffer, pipe)) r.output += buffer;
-  const int status = pipe ? pclose(pipe) : -1;
-  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return r;
-}
+Result run(const std::string& arguments) { return moorsph::test_support::runMoorsph(arguments); }
 
 std::string source() { return std::getenv("MOORSPH_SOURCE_DIR") ? std::getenv("MOORSPH_SOURCE_DIR") : "."; }
 

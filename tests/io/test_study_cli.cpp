@@ -3,6 +3,8 @@
 // exist and their numbers agree with each other and with outside bounds (particle
 // counts of the lattice, Ritter's front speed); bad arguments exit 1 with a message.
 #include <gtest/gtest.h>
+
+#include "run_support.hpp"
 #include <sys/wait.h>
 
 #include <cmath>
@@ -16,20 +18,9 @@
 
 namespace {
 
-struct Result {
-  int code = -1;
-  std::string output;
-};
+using Result = moorsph::test_support::CliResult;
 
-Result run(const std::string& arguments) {
-  Result r;
-  std::FILE* pipe = popen((std::string(MOORSPH_BINARY) + " " + arguments + " 2>&1").c_str(), "r");
-  char buffer[512];
-  while (pipe && std::fgets(buffer, sizeof buffer, pipe)) r.output += buffer;
-  const int status = pipe ? pclose(pipe) : -1;
-  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return r;
-}
+Result run(const std::string& arguments) { return moorsph::test_support::runMoorsph(arguments); }
 
 // Martin & Moyce geometry: column a = 0.1 m wide, 2a high, in a 0.4 m x 0.3 m tank.
 const char* const kScene = R"(dim: 2
