@@ -15,7 +15,8 @@ run() {  # name, then the runner's options
   [ -s "$out/$name.csv" ] && grep -q "^$name " "$out/summary.txt" 2>/dev/null && return 0
   echo "== $name $*" >&2
   local line
-  line=$("$exe" "$@" --csv "$out/$name.csv" | tail -n 1)
+  "$exe" "$@" --csv "$out/$name.csv" > "$out/$name.txt"
+  line=$(tail -n 1 "$out/$name.txt")
   echo "$name $line" >> "$out/summary.txt"
 }
 D=0.203
