@@ -74,6 +74,13 @@ void causeOfEscape(std::ostream& os, const FluidParticles<D>& f, std::size_t i, 
   const double wall_speed = ctx.walls ? ctx.walls->maxMovingSpeed() : 0.0;
   const NearestSurface s = nearestSurface(ctx.walls, f.r[i]);
   const std::string wall = s.name.empty() ? "a wall" : "surface '" + s.name + "'";
+  // Above the domain's top and well clear of every wall: a splash thrown over an open
+  // tank, not a leak (no wall is where it left).
+  if (f.r[i][1] >= ctx.setup.domain.upper[1] && s.distance > 2.0 * ctx.setup.h()) {
+    os << ". Likely cause: a splash thrown above the domain's top (y = " << ctx.setup.domain.upper[1]
+       << " m) over an open tank; make the tank (and with it the domain) taller or close it with a lid";
+    return;
+  }
   os << ". Likely cause: the particle passed through " << wall << ": ";
   if (speed > kDesignMach * c)
     os << "its speed " << speed << " m/s exceeds c_s/10 = " << kDesignMach * c

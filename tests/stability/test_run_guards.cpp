@@ -63,6 +63,19 @@ TEST(RunGuards, ParticleThroughWallNamesSpeedCause) {
   EXPECT_TRUE(has(msg, "raise sound_speed")) << msg;
 }
 
+// A droplet flying up above the water leaves over the open tank's top (the domain
+// reaches 1.4 m), far from any wall: the message must call it a splash, not a leak.
+TEST(RunGuards, DropletOverTheTopIsCalledASplash) {
+  auto scene = smallTank();
+  scene.fluid.add(fluid::Vec<2>(0.2, 0.6), fluid::Vec<2>(0.0, 6.0), scene.setup.rho0, scene.fluid.m[0]);
+  fluid::FluidSimulation<2> sim(scene.setup, scene.fluid, scene.boundary);
+  const std::string msg = runUntilError(sim, 2000);
+  std::printf("%s\n", msg.c_str());
+  EXPECT_TRUE(has(msg, "fluid particle left the domain")) << msg;
+  EXPECT_TRUE(has(msg, "splash thrown above the domain's top")) << msg;
+  EXPECT_FALSE(has(msg, "passed through")) << msg;
+}
+
 TEST(RunGuards, NonPositiveDensityNamesTension) {
   // A tension failure takes a long violent run to develop (SPHERIC Test 2 at 1.16 s);
   // this case plants the state it leaves, a particle at rho = -rho0 (whose neighbours,
