@@ -87,7 +87,9 @@ bodies::MooringLineParams lineParams(const io::SceneConfig& c, const io::Mooring
 // zero: unreadable in a plot of small motions. These are continuous through zero.
 Eigen::Vector3d rollPitchYaw(const Eigen::Quaterniond& q) {
   const Eigen::Matrix3d R = q.normalized().toRotationMatrix();
-  return Eigen::Vector3d(std::atan2(R(2, 1), R(2, 2)), std::asin(std::clamp(-R(2, 0), -1.0, 1.0)), std::atan2(R(1, 0), R(0, 0)));
+  // R = Ry(yaw) Rz(pitch) Rx(roll): R10 = sin(pitch), R11 / R12 and R00 / R20 give roll and yaw.
+  return Eigen::Vector3d(std::atan2(-R(1, 2), R(1, 1)), std::asin(std::clamp(R(1, 0), -1.0, 1.0)),
+                         std::atan2(-R(2, 0), R(0, 0)));
 }
 
 std::unique_ptr<bodies::MultibodySystem> buildSceneBodies(const io::SceneConfig& c) {
@@ -221,7 +223,7 @@ void attachBodySeries(cases::RunRecorder<D>& recorder, const coupling::CoSimulat
       }
       else v.push_back(2.0 * std::atan2(k.orientation.z(), k.orientation.w()));
       return v;
-    }, "body reference point position and orientation (roll, pitch, yaw: R = Rz(yaw) Ry(pitch) Rx(roll); quaternion body -> ground)");
+    }, "body reference point position and orientation (roll, pitch, yaw: R = Ry(yaw) Rz(pitch) Rx(roll), y up; quaternion body -> ground)");
     std::vector<io::SeriesColumn> speed{{"vx", "m/s"}, {"vy", "m/s"}};
     if (D == 3) speed.insert(speed.end(), {{"vz", "m/s"}, {"wx", "rad/s"}, {"wy", "rad/s"}});
     speed.push_back({"wz", "rad/s"});

@@ -24,7 +24,8 @@ std::unique_ptr<coupling::CoSimulation<D>> makeCoSimulation(const io::SceneConfi
                                                              const fluid::FluidParticles<D>& particles,
                                                              const std::vector<double>& restore);
 
-/// Roll, pitch, yaw [rad] of a body -> ground rotation R = Rz(yaw) Ry(pitch) Rx(roll):
+/// Roll (about x), pitch (about z), yaw (about y, up) [rad] of a body -> ground rotation
+/// R = Ry(yaw) Rz(pitch) Rx(roll):
 /// pitch in [-pi/2, pi/2], roll and yaw in (-pi, pi].
 Eigen::Vector3d rollPitchYaw(const Eigen::Quaterniond& orientation);
 

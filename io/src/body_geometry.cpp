@@ -29,8 +29,9 @@ double signedBoxDistance(const Eigen::Vector3d& p, const Eigen::Vector3d& c, con
 }  // namespace
 
 Eigen::Matrix3d bodyRotation(const BodyConfig& b) {
-  return (Eigen::AngleAxisd(b.orientation[2], Eigen::Vector3d::UnitZ()) *
-          Eigen::AngleAxisd(b.orientation[1], Eigen::Vector3d::UnitY()) *
+  // y is up: yaw turns about y, pitch about z (across), roll about x (along).
+  return (Eigen::AngleAxisd(b.orientation[2], Eigen::Vector3d::UnitY()) *
+          Eigen::AngleAxisd(b.orientation[1], Eigen::Vector3d::UnitZ()) *
           Eigen::AngleAxisd(b.orientation[0], Eigen::Vector3d::UnitX()))
       .toRotationMatrix();
 }

@@ -169,7 +169,7 @@ BodyConfig readBody(MapReader& b, const SceneConfig& c, std::size_t index) {
   readFixed(b, body, c);
   body.position = toTriple(b.vector("position", c.dim));
   if (c.dim == 2) {
-    body.orientation[2] = b.number("orientation_deg", 0.0) * kPi / 180.0;
+    body.orientation[1] = b.number("orientation_deg", 0.0) * kPi / 180.0;  // about z: pitch
   } else {
     const auto o = b.vector("orientation_deg", 3, {0.0, 0.0, 0.0});
     for (int k = 0; k < 3; ++k) body.orientation[k] = o[k] * kPi / 180.0;

@@ -57,7 +57,7 @@ void body(YAML::Emitter& e, const BodyConfig& b, int dim) {
     if (b.fixed[k]) e << dofs[k];
   e << YAML::EndSeq;
   vec(e, "position", b.position, dim);
-  if (dim == 2) e << YAML::Key << "orientation_deg" << YAML::Value << b.orientation[2] * deg;
+  if (dim == 2) e << YAML::Key << "orientation_deg" << YAML::Value << b.orientation[1] * deg;
   else vec(e, "orientation_deg", Triple{b.orientation[0] * deg, b.orientation[1] * deg, b.orientation[2] * deg}, 3);
   vec(e, "offset", b.offset, dim);
   vec(e, "velocity", b.velocity, dim);

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <moorsph/io/body_geometry.hpp>
 #include "scene_sections.hpp"
 
 namespace moorsph::io::detail {
@@ -50,11 +51,8 @@ Eigen::Vector3d groundPoint(const LineEndConfig& e, const SceneConfig& c) {
   const Eigen::Vector3d p(e.point[0], e.point[1], e.point[2]);
   if (e.body.empty()) return p;
   const BodyConfig& b = c.bodies[c.bodyIndex(e.body)];
-  const Eigen::Quaterniond q = Eigen::AngleAxisd(b.orientation[2], Eigen::Vector3d::UnitZ()) *
-                               Eigen::AngleAxisd(b.orientation[1], Eigen::Vector3d::UnitY()) *
-                               Eigen::AngleAxisd(b.orientation[0], Eigen::Vector3d::UnitX());
   const Triple s = b.start();
-  return Eigen::Vector3d(s[0], s[1], s[2]) + q * p;
+  return Eigen::Vector3d(s[0], s[1], s[2]) + bodyRotation(b) * p;
 }
 
 void readLineParameters(MapReader& m, MooringConfig& l) {

@@ -238,15 +238,25 @@ TEST(BodyRuns, EveryMooringModelRunsByChangingOneWord) {
 }
 
 TEST(BodyRuns, RollPitchYawAreContinuousThroughZero) {
-  // R = Rz(yaw) Ry(pitch) Rx(roll) built from known angles gives them back, small
+  // R = Ry(yaw) Rz(pitch) Rx(roll) (y up) built from known angles gives them back, small
   // negative angles included (no jumps by pi in the series).
   for (const Eigen::Vector3d& rpy : {Eigen::Vector3d(0.1, -0.2, 0.3), Eigen::Vector3d(-0.004, 0.002, -0.001),
                                     Eigen::Vector3d(2.5, 1.2, -3.0)}) {
-    const Eigen::Quaterniond q = Eigen::AngleAxisd(rpy[2], Eigen::Vector3d::UnitZ()) *
-                                 Eigen::AngleAxisd(rpy[1], Eigen::Vector3d::UnitY()) *
+    const Eigen::Quaterniond q = Eigen::AngleAxisd(rpy[2], Eigen::Vector3d::UnitY()) *
+                                 Eigen::AngleAxisd(rpy[1], Eigen::Vector3d::UnitZ()) *
                                  Eigen::AngleAxisd(rpy[0], Eigen::Vector3d::UnitX());
     EXPECT_LT((app::rollPitchYaw(q) - rpy).norm(), 1e-12) << rpy.transpose();
   }
+}
+
+TEST(BodyRuns, PitchIsAboutTheAcrossAxisAndYawAboutUp) {
+  // y is up, x along the tank: a turn about z (across) is pitch, about y (up) is yaw.
+  EXPECT_LT((app::rollPitchYaw(Eigen::Quaterniond(Eigen::AngleAxisd(0.1, Eigen::Vector3d::UnitZ()))) -
+             Eigen::Vector3d(0.0, 0.1, 0.0)).norm(), 1e-15);
+  EXPECT_LT((app::rollPitchYaw(Eigen::Quaterniond(Eigen::AngleAxisd(0.1, Eigen::Vector3d::UnitY()))) -
+             Eigen::Vector3d(0.0, 0.0, 0.1)).norm(), 1e-15);
+  EXPECT_LT((app::rollPitchYaw(Eigen::Quaterniond(Eigen::AngleAxisd(0.1, Eigen::Vector3d::UnitX()))) -
+             Eigen::Vector3d(0.1, 0.0, 0.0)).norm(), 1e-15);
 }
 
 TEST(BodyRuns, SnapshotPackingRoundTrips) {

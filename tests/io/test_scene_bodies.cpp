@@ -117,7 +117,7 @@ TEST(SceneBodies, BodySurfaceIsMovableAndWaterStaysOutside) {
 TEST(SceneBodies, RotatedBoxKeepsWaterOutOfItsRotatedVolume) {
   io::SceneConfig c = io::loadSceneText(kBox, "s.yaml", {"bodies.0.orientation_deg=30"});
   const double a = M_PI / 6;
-  EXPECT_NEAR(c.bodies[0].orientation[2], a, 1e-15);
+  EXPECT_NEAR(c.bodies[0].orientation[1], a, 1e-15);
   const auto built = io::buildScene<2>(c);
   for (const auto& r : built.scene.fluid.r) {
     const Eigen::Vector2d d = r - Eigen::Vector2d(0.4, 0.2);

@@ -63,7 +63,7 @@ test::MooredHull mooredHull(const io::SceneConfig& c) {
 
 test::HullPose scenePose(const io::SceneConfig& c) {
   const io::BodyConfig& b = c.bodies.at(0);
-  return {b.position[0], b.position[1], b.orientation[2]};
+  return {b.position[0], b.position[1], b.orientation[1]};  // trim = pitch, about z
 }
 
 }  // namespace
@@ -175,7 +175,7 @@ TEST(ShipScene, DISABLED_TinyShipFloatsAtItsDraught) {
     while (std::getline(in, line)) v.push_back(std::stod(line.substr(0, line.find(','))));
     return v;
   }();
-  const auto y = column(dir, "body_ship.y"), trim = column(dir, "body_ship.yaw");
+  const auto y = column(dir, "body_ship.y"), trim = column(dir, "body_ship.pitch");
   const auto tension = column(dir, "line_fore.fairlead_tension");
   double mean_draught = 0.0, mean_tension = 0.0;
   int n = 0;

@@ -11,7 +11,7 @@
 
 namespace moorsph::io {
 
-/// Body -> ground rotation of the scene's orientation: yaw (z) * pitch (y) * roll (x).
+/// Body -> ground rotation of the scene's orientation (y up): Ry(yaw) Rz(pitch) Rx(roll).
 Eigen::Matrix3d bodyRotation(const BodyConfig& body);
 
 /// The body's surface particles (normals out of the body), at body-frame offsets

@@ -151,7 +151,7 @@ struct BodyConfig {
   std::array<Triple, 3> inertia{};
   std::array<bool, 6> fixed{};             ///< x, y, z, rx, ry, rz held
   Triple position{0.0, 0.0, 0.0};          ///< reference point in ground at rest [m]
-  Triple orientation{0.0, 0.0, 0.0};       ///< roll, pitch, yaw [rad] (2D: yaw only), body -> ground
+  Triple orientation{0.0, 0.0, 0.0};       ///< roll (about x), pitch (about z), yaw (about y, up) [rad]; 2D: pitch only; body -> ground R = Ry(yaw) Rz(pitch) Rx(roll)
   Triple offset{0.0, 0.0, 0.0};            ///< initial displacement from `position` [m]
   Triple velocity{0.0, 0.0, 0.0};          ///< initial velocity [m/s]
   BodyShapeConfig shape;
