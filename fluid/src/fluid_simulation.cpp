@@ -4,12 +4,13 @@
 #include <cmath>
 #include <sstream>
 #include <moorsph/fluid/gravity.hpp>
+#include <moorsph/fluid/particle_shifting.hpp>
 #include <moorsph/fluid/run_guard.hpp>
 
 namespace moorsph::fluid {
 namespace {
 
-const char* const kKnownEffects[] = {"pressure", "viscosity", "xsph", "density_diffusion", "gravity", "walls"};
+const char* const kKnownEffects[] = {"pressure", "viscosity", "xsph", "density_diffusion", "gravity", "walls", "particle_shifting"};
 
 void checkSetup(const std::vector<std::string>& effects) {
   for (const auto& e : effects) {
@@ -56,6 +57,10 @@ void FluidSimulation<D>::buildEffects(BoundaryGeometry<D> boundary) {
   } else if (!boundary.empty()) {
     throw std::invalid_argument("the scene has boundary surfaces but 'walls' is not in its effects");
   }
+  // After the pair forces and walls: it adds to the transport velocity they leave.
+  if (setup_.has("particle_shifting"))
+    effects_.push_back(std::make_unique<ParticleShifting<D>>(setup_.method.shifting, setup_.dx, setup_.h(),
+                                                             walls_ ? &walls_->particles() : nullptr));
 }
 
 template <int D>

@@ -18,6 +18,16 @@ enum class DensityDiffusionForm {
   Fourtakas,          ///< Fourtakas et al. (2019): hydrostatic part removed, no wall spurious flux
 };
 
+/// Particle shifting (the "particle_shifting" effect, particle_shifting.hpp).
+struct ShiftingParameters {
+  double coefficient = 2.0;        ///< A in (1): Skillen et al. 2013
+  double anti_clustering = 0.2;    ///< R in (1): Lind et al. 2012
+  int anti_clustering_power = 4;   ///< n in (1)
+  double cap = 0.5;                ///< |du_shift| <= cap |v|
+  double surface_divergence = -1;  ///< < 0: D - 0.4 (1.6 in 2D, 2.6 in 3D)
+  double splash_divergence = -1;   ///< < 0: D / 2
+};
+
 struct MethodParameters {
   std::string name = "reference";
   double h_factor = 1.2;             ///< h = h_factor dx
@@ -36,6 +46,7 @@ struct MethodParameters {
   double boundary_strength = 0.01;   ///< wall force scale: strength c_s^2 m_i / h
   double density_diffusion_delta = 0.1;
   DensityDiffusionForm density_diffusion_form = DensityDiffusionForm::Fourtakas;
+  ShiftingParameters shifting;      ///< used when the scene names particle_shifting
   double skin_factor = 0.15;         ///< Verlet skin = skin_factor * 2h
   /// Runtime guard, not part of the method: a step shorter than min_dt_fraction x the
   /// CFL step (the step a fluid at rest takes) stops the run with a diagnostic. 0 disables it.
