@@ -200,7 +200,8 @@ SceneConfig readScene(const YAML::Node& root, const YamlSource& source) {
 
 const std::vector<std::string>& knownEffects() {
   static const std::vector<std::string> known{"pressure", "viscosity", "xsph",         "density_diffusion", "gravity",
-                                              "walls",    "piston",    "damping_zone", "forcing_region", "bodies"};
+                                              "walls",    "piston",    "damping_zone", "forcing_region", "bodies",
+                                              "particle_shifting"};
   return known;
 }
 

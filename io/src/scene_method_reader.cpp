@@ -3,6 +3,25 @@
 
 namespace moorsph::io::detail {
 
+namespace {
+
+// method.particle_shifting: the parameters of the particle_shifting effect.
+void readShifting(MapReader& m, MapReader& top, fluid::MethodParameters& p) {
+  if (!m.has("particle_shifting")) {
+    m.child("particle_shifting");
+    return;
+  }
+  MapReader s(m.child("particle_shifting"), "method.particle_shifting", top.source());
+  fluid::ShiftingParameters& q = p.shifting;
+  q.coefficient = s.positive("coefficient", q.coefficient, "shift coefficient A (shift velocity = -A h |v| grad C)");
+  q.anti_clustering = s.positive("anti_clustering", q.anti_clustering, "anti-clustering factor R", true);
+  q.cap = s.positive("cap", q.cap, "largest shift as a fraction of |v|");
+  if (q.cap > 1.0) s.fail("cap", "expected a fraction of the particle speed in (0, 1] (default 0.5)");
+  s.finish();
+}
+
+}  // namespace
+
 void readMethod(MapReader& top, SceneConfig& c) {
   if (!top.has("method")) {
     top.child("method");
@@ -44,7 +63,11 @@ void readMethod(MapReader& top, SceneConfig& c) {
   } else {
     m.child("density_diffusion");
   }
-  const bool changed = m.has("h_factor") || m.has("cfl") || m.has("predictor_fraction") || m.has("xsph_form") ||
+  readShifting(m, top, p);
+  // A run guard, not part of the method: it does not make the method "reference+options".
+  p.min_dt_fraction = m.positive("min_dt_fraction", p.min_dt_fraction, "smallest time step / CFL step before the run stops", true);
+  if (p.min_dt_fraction >= 1.0) m.fail("min_dt_fraction", "expected a fraction in [0, 1) (0 disables the guard; default 1e-3)");
+  const bool changed = m.has("particle_shifting") || m.has("h_factor") || m.has("cfl") || m.has("predictor_fraction") || m.has("xsph_form") ||
                        m.has("b_off") || m.has("density_diffusion") || m.has("force_dt_factor") || m.has("gamma") ||
                        m.has("xsph_eps") || m.has("viscosity_xi") || m.has("viscosity_beta_factor") ||
                        m.has("boundary_strength") || m.has("skin_factor");

@@ -56,6 +56,11 @@ std::string resolvedSceneYaml(const SceneConfig& c) {
   e << YAML::Key << "form" << YAML::Value
     << (m.density_diffusion_form == fluid::DensityDiffusionForm::Fourtakas ? "fourtakas" : "molteni_colagrossi");
   e << YAML::Key << "delta" << YAML::Value << m.density_diffusion_delta << YAML::EndMap;
+  e << YAML::Key << "particle_shifting" << YAML::Value << YAML::BeginMap;
+  e << YAML::Key << "coefficient" << YAML::Value << m.shifting.coefficient;
+  e << YAML::Key << "anti_clustering" << YAML::Value << m.shifting.anti_clustering;
+  e << YAML::Key << "cap" << YAML::Value << m.shifting.cap << YAML::EndMap;
+  e << YAML::Key << "min_dt_fraction" << YAML::Value << m.min_dt_fraction;
   e << YAML::EndMap;
   e << YAML::Key << "effects" << YAML::Value << YAML::Flow << c.effects;
   if (c.domain_given) {

@@ -306,3 +306,37 @@ TEST(SceneLoader, SphericTest2MatchesTheCppBuilder) {
   ASSERT_EQ(from_file.probes.size(), 4u);
   EXPECT_EQ(from_file.probes[0].surface, by_hand.box_surface);
 }
+
+// method.particle_shifting and method.min_dt_fraction reach the fluid setup; the effect
+// is built only when listed; bad values are rejected with the key and the line.
+TEST(SceneLoader, ParticleShiftingAndTheStepGuard) {
+  const std::string method =
+      "method:\n  min_dt_fraction: 0.01\n  particle_shifting: {coefficient: 1.5, anti_clustering: 0.1, cap: 0.3}\n";
+  const auto c = io::loadSceneText(std::string(kBase) + method +
+                                       "effects: [pressure, xsph, density_diffusion, particle_shifting, gravity, walls]\n",
+                                   "s.yaml");
+  EXPECT_EQ(c.method.shifting.coefficient, 1.5);
+  EXPECT_EQ(c.method.shifting.anti_clustering, 0.1);
+  EXPECT_EQ(c.method.shifting.cap, 0.3);
+  EXPECT_EQ(c.method.min_dt_fraction, 0.01);
+  EXPECT_EQ(c.method.name, "reference+options");
+  const auto again = io::loadSceneText(io::resolvedSceneYaml(c), "resolved.yaml");
+  EXPECT_EQ(again.method.shifting.coefficient, 1.5);
+  EXPECT_EQ(again.method.min_dt_fraction, 0.01);
+  const auto built = io::buildScene<2>(c);
+  EXPECT_EQ(built.scene.setup.method.shifting.cap, 0.3);
+  EXPECT_TRUE(built.scene.setup.has("particle_shifting"));
+
+  // The guard alone is not a method option.
+  const auto guard = io::loadSceneText(std::string(kBase) + "method:\n  min_dt_fraction: 0\n", "s.yaml");
+  EXPECT_EQ(guard.method.name, "reference");
+  EXPECT_EQ(guard.method.min_dt_fraction, 0.0);
+
+  const std::string cap = errorOf(std::string(kBase) + "method:\n  particle_shifting: {cap: 2}\n");
+  EXPECT_NE(cap.find("'method.particle_shifting.cap'"), std::string::npos) << cap;
+  EXPECT_NE(cap.find("s.yaml:11:"), std::string::npos) << cap;
+  const std::string typo = errorOf(std::string(kBase) + "method:\n  particle_shifting: {coeficient: 2}\n");
+  EXPECT_NE(typo.find("did you mean 'coefficient'"), std::string::npos) << typo;
+  const std::string frac = errorOf(std::string(kBase) + "method:\n  min_dt_fraction: 1.5\n");
+  EXPECT_NE(frac.find("'method.min_dt_fraction': expected a fraction in [0, 1)"), std::string::npos) << frac;
+}
