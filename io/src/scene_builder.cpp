@@ -232,6 +232,7 @@ BuiltScene<D> buildScene(const SceneConfig& c) {
     g.bottom = gc.bottom;
     g.top = gc.top;
     g.threshold = gc.threshold;
+    g.volume_edge = gc.volume_edge;
     out.gauge_names.push_back(gc.name);
     out.gauges.push_back(g);
   }

@@ -58,6 +58,9 @@ void addSceneEffects(fluid::FluidSimulation<D>& sim, const SceneConfig& c, const
     spec.still_level = f.still_level;
     spec.kappa = f.kappa;
     spec.mu = c.mu;
+    spec.ramp_up = f.ramp_up;
+    spec.end_time = f.end_time;
+    spec.gain = f.gain;
     const double depth = f.still_level - f.floor;
     typename fluid::ForcingRegion<D>::TargetField target;
     if (f.theory == "stokes2") {

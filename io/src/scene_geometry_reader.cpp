@@ -239,6 +239,7 @@ void readSensors(MapReader& top, SceneConfig& c) {
       g.bottom = m.number("bottom", 0.0);
       g.top = m.requiredNumber("top");
       g.threshold = m.number("threshold", g.threshold);
+      g.volume_edge = m.boolean("volume_edge", g.volume_edge);
       if (!(g.top > g.bottom)) m.fail("top", "expected top > bottom [m]");
       if (!(g.threshold > 0.0 && g.threshold < 1.0)) m.fail("threshold", "expected xi_t in (0, 1) (METHOD.md section 3: 0.8)");
       m.finish();

@@ -115,6 +115,9 @@ void readForcing(MapReader& top, SceneConfig& c) {
   f.kappa = m.number("kappa", f.kappa);
   if (std::pow(10.0, f.kappa) * c.mu / c.rho0 * c.cflDt() >= 1.0)
     m.fail("kappa", "the relaxation rate 10^kappa mu / rho0 times dt must stay below 1");
+  f.ramp_up = m.positive("ramp_up", 0.0, "ramp-up time of the target [s]", true);
+  f.end_time = m.positive("end_time", f.end_time, "time the forcing stops [s]", true);
+  f.gain = m.positive("gain", 1.0, "gain on the target velocity (amplitude calibration)");
   if (!m.has("wave")) m.fail("wave", "required key is missing (expected theory, amplitude [m], period [s])");
   MapReader w(m.child("wave"), "forcing_region.wave", top.source());
   f.theory = w.text("theory", "airy");

@@ -2,6 +2,7 @@
 // records exactly what ran (and can be re-run with `moorsph run scene.resolved.yaml`).
 #include <yaml-cpp/yaml.h>
 
+#include <cmath>
 #include <filesystem>
 
 #include <moorsph/io/scene_loader.hpp>
@@ -145,6 +146,8 @@ std::string resolvedSceneYaml(const SceneConfig& c) {
     e << YAML::Key << "x_start" << YAML::Value << f.x_start << YAML::Key << "length" << YAML::Value << f.length;
     e << YAML::Key << "floor" << YAML::Value << f.floor << YAML::Key << "bottom_gap" << YAML::Value << f.bottom_gap;
     e << YAML::Key << "still_level" << YAML::Value << f.still_level << YAML::Key << "kappa" << YAML::Value << f.kappa;
+    e << YAML::Key << "ramp_up" << YAML::Value << f.ramp_up << YAML::Key << "gain" << YAML::Value << f.gain;
+    if (std::isfinite(f.end_time)) e << YAML::Key << "end_time" << YAML::Value << f.end_time;
     e << YAML::Key << "wave" << YAML::Value << YAML::Flow << YAML::BeginMap << YAML::Key << "theory" << YAML::Value
       << f.theory << YAML::Key << "amplitude" << YAML::Value << f.amplitude << YAML::Key << "period" << YAML::Value
       << f.period << YAML::EndMap;
@@ -157,7 +160,8 @@ std::string resolvedSceneYaml(const SceneConfig& c) {
       e << YAML::Key << "x" << YAML::Value << g.x;
       if (c.dim == 3) e << YAML::Key << "z" << YAML::Value << g.z;
       e << YAML::Key << "bottom" << YAML::Value << g.bottom << YAML::Key << "top" << YAML::Value << g.top;
-      e << YAML::Key << "threshold" << YAML::Value << g.threshold << YAML::EndMap;
+      e << YAML::Key << "threshold" << YAML::Value << g.threshold;
+      e << YAML::Key << "volume_edge" << YAML::Value << g.volume_edge << YAML::EndMap;
     }
     e << YAML::EndSeq;
   }

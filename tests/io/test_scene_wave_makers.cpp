@@ -127,3 +127,77 @@ TEST(SceneWaveMakers, FlumeExampleLoads) {
   EXPECT_TRUE(c.piston.present);
   EXPECT_EQ(c.damping_zones.size(), 1u);
 }
+
+// forcing_region.gain, ramp_up and end_time reach the effect: in the linear start-up
+// the velocity the region drives is proportional to the gain, a forcing that has ended
+// drives nothing, and a 1 s half-cosine ramp scales the first steps by (1 - cos(pi t))/2.
+TEST(SceneWaveMakers, ForcingGainRampAndEndFromTheScene) {
+  const std::string base = R"(dim: 2
+end_time: 1.0
+resolution: {dx: 0.02}
+effects: [pressure, gravity, walls, forcing_region]
+geometry:
+  - tank: {lower: [0, 0], upper: [2, 0.5]}
+  - water: {lower: [0, 0], upper: [2, 0.3]}
+forcing_region: {x_start: 0.1, length: 1.0, wave: {amplitude: 0.01, period: 1.0}EXTRA}
+)";
+  // Velocities by particle id after 20 steps. The region also relaxes the start-up
+  // settling of the water toward its target, so the baseline is the same region with a
+  // vanishing target (gain 1e-9): the differences are what the target drives.
+  auto velocities = [&](std::string text) {
+    const auto c = io::loadSceneText(text, "f.yaml");
+    auto built = io::buildScene<2>(c);
+    fluid::FluidSimulation<2> sim(built.scene.setup, built.scene.fluid, built.scene.boundary);
+    io::addSceneEffects(sim, c, built);
+    for (int n = 0; n < 20; ++n) sim.step();
+    std::vector<fluid::Vec<2>> v(sim.fluid().size());
+    for (std::size_t i = 0; i < v.size(); ++i) v[sim.fluid().id[i]] = sim.fluid().v[i];
+    return v;
+  };
+  auto with = [&](const std::string& extra) { return std::string(base).replace(base.find("EXTRA"), 5, extra); };
+  const auto zero = velocities(with(", gain: 1e-9"));
+  auto driven = [&](const std::vector<fluid::Vec<2>>& v) {
+    double sum = 0.0;
+    for (std::size_t i = 0; i < v.size(); ++i) sum += (v[i] - zero[i]).norm();
+    return sum;
+  };
+  const double one = driven(velocities(with(""))), two = driven(velocities(with(", gain: 2")));
+  const double ramped = driven(velocities(with(", ramp_up: 1")));
+  std::printf("sum |v - v_zero target| after 20 steps: gain 1 %.4g, gain 2 %.4g, 1 s ramp %.3g m/s\n", one, two, ramped);
+  EXPECT_NEAR(two / one, 2.0, 0.05);
+  EXPECT_LT(ramped, 0.01 * one);  // the ramp averages ~1e-4 over the first 20 steps (0.01 s)
+  // A forcing that has ended leaves the run exactly as if the scene had none.
+  std::string none = with(", end_time: 0");
+  const auto ended = velocities(none);
+  none.erase(none.find("forcing_region: {"));
+  none.replace(none.find(", forcing_region]"), 17, "]");
+  const auto plain = velocities(none);
+  for (std::size_t i = 0; i < plain.size(); ++i) ASSERT_EQ(ended[i], plain[i]) << "particle " << i;
+  EXPECT_NE(errorOf(with(", gain: 0")).find("'forcing_region.gain'"),
+            std::string::npos);
+}
+
+// gauges[].volume_edge: the plain crossing (false) reads s(xi_t) = 0.4532 h below the
+// volume-edge reading in still water (the half-space depth of wave_gauge.hpp, 2D, xi_t = 0.8).
+TEST(SceneWaveMakers, GaugeVolumeEdgeSwitch) {
+  const std::string text = R"(dim: 2
+end_time: 1.0
+resolution: {dx: 0.02}
+geometry:
+  - tank: {lower: [0, 0], upper: [1, 0.5]}
+  - water: {lower: [0, 0], upper: [1, 0.3]}
+gauges:
+  - {name: edge, x: 0.5, top: 0.45}
+  - {name: plain, x: 0.5, top: 0.45, volume_edge: false}
+)";
+  const auto c = io::loadSceneText(text, "g.yaml");
+  EXPECT_TRUE(c.gauges[0].volume_edge);
+  EXPECT_FALSE(c.gauges[1].volume_edge);
+  EXPECT_FALSE(io::loadSceneText(io::resolvedSceneYaml(c), "r.yaml").gauges[1].volume_edge);
+  auto built = io::buildScene<2>(c);
+  fluid::FluidSimulation<2> sim(built.scene.setup, built.scene.fluid, built.scene.boundary);
+  const double edge = fluid::WaveGauge<2>(built.gauges[0]).read(sim);
+  const double plain = fluid::WaveGauge<2>(built.gauges[1]).read(sim);
+  EXPECT_NEAR(edge - plain, 0.4532 * 1.2 * 0.02, 1e-4 * 0.02);
+  EXPECT_NEAR(edge, 0.3, 0.1 * 0.02);
+}

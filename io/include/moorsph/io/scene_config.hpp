@@ -104,6 +104,9 @@ struct ForcingRegionConfig {
   double bottom_gap = 0.0;             ///< [m]
   double still_level = 0.0;            ///< y of the still surface [m]
   double kappa = 7.0;
+  double ramp_up = 0.0;                ///< half-cosine ramp of the target [s]; 0: none (METHOD.md)
+  double end_time = std::numeric_limits<double>::infinity();  ///< the forcing stops here [s]
+  double gain = 1.0;                   ///< multiplies the target (amplitude calibration)
   std::string theory = "airy";         ///< "airy" or "stokes2"
   double amplitude = 0.0, period = 0.0;  ///< [m], [s]
 };
@@ -115,6 +118,7 @@ struct GaugeConfig {
   double bottom = 0.0;  ///< [m]
   double top = 1.0;     ///< [m]
   double threshold = 0.8;
+  bool volume_edge = true;  ///< add s(xi_t) to the crossing (wave_gauge.hpp); false: the plain crossing
 };
 
 struct ProbeConfig {
