@@ -25,13 +25,33 @@ PressureProbe<D>::PressureProbe(PressureProbeSpec<D> spec, const Walls<D>& walls
   }
   if (patch_.empty()) throw std::invalid_argument("pressure probe: no boundary particle of the face within the radius");
   patch_area_ = static_cast<double>(patch_.size()) * std::pow(spec_.boundary_spacing, D - 1);
+  if (walls.surfaces()[spec_.surface].movable) {
+    const RigidMotion<D>& m = walls.surfaceMotion(spec_.surface);
+    moving_ = true;
+    body_point_ = m.rotation.transpose() * (spec_.point - m.position);
+    body_normal_ = m.rotation.transpose() * spec_.normal;
+  }
+}
+
+template <int D>
+Vec<D> PressureProbe<D>::currentPoint(const Walls<D>& walls) const {
+  if (!moving_) return spec_.point;
+  const RigidMotion<D>& m = walls.surfaceMotion(spec_.surface);
+  return m.position + m.rotation * body_point_;
+}
+
+template <int D>
+Vec<D> PressureProbe<D>::currentNormal(const Walls<D>& walls) const {
+  if (!moving_) return spec_.normal;
+  return walls.surfaceMotion(spec_.surface).rotation * body_normal_;
 }
 
 template <int D>
 double PressureProbe<D>::readReaction(const Walls<D>& walls) const {
   const BoundaryParticles<D>& b = walls.particles();
+  const Vec<D> normal = currentNormal(walls);
   double push = 0.0;  // force of the fluid into the wall [N]
-  for (const std::uint32_t k : patch_) push -= b.reaction[k].dot(spec_.normal);
+  for (const std::uint32_t k : patch_) push -= b.reaction[k].dot(normal);
   return push / patch_area_;
 }
 
@@ -43,7 +63,9 @@ double PressureProbe<D>::readReaction(const FluidSimulation<D>& sim) const {
 
 template <int D>
 double PressureProbe<D>::readInterpolated(const FluidSimulation<D>& sim) const {
-  const Vec<D> r0 = spec_.point + spec_.interpolation_offset * spec_.normal;
+  if (!sim.walls()) throw std::invalid_argument("pressure probe: the simulation has no walls");
+  const Vec<D> point = currentPoint(*sim.walls());
+  const Vec<D> r0 = point + spec_.interpolation_offset * currentNormal(*sim.walls());
   const NeighbourSearch<D>& search = sim.neighbours();
   const CellGrid<D>& grid = search.grid();
   const FluidParticles<D>& f = sim.fluid();
@@ -72,7 +94,7 @@ double PressureProbe<D>::readInterpolated(const FluidSimulation<D>& sim) const {
   }
   if (weight <= 0.0) return 0.0;
   const Vec<D> g = sim.setup().has("gravity") ? sim.setup().gravity : Vec<D>::Zero();
-  return weighted / weight - eos.rho0() * g.dot(r0 - spec_.point);
+  return weighted / weight - eos.rho0() * g.dot(r0 - point);
 }
 
 template class PressureProbe<2>;

@@ -25,6 +25,11 @@
 //    -rho0 g.(r0 - point). The Shepard denominator keeps it unbiased where the kernel
 //    is truncated by the wall; with no fluid within 2h of r0 it reads 0.
 //
+// On a movable surface (a body, a piston) the sensor moves with it: its point and
+// normal are kept in the surface's body frame (from the surface's motion when the
+// probe is made) and placed by the surface's current motion at every reading, and the
+// patch's own rotated normals carry the reaction estimate.
+//
 // Kleefsman et al. (2005) measured with 8 mm (diameter) transducers; both estimates
 // average over a larger patch at the resolutions used here.
 #include <cstdint>
@@ -52,6 +57,9 @@ class PressureProbe {
   PressureProbe(PressureProbeSpec<D> spec, const Walls<D>& walls);
 
   const PressureProbeSpec<D>& spec() const { return spec_; }
+  /// Where the sensor is now, and its normal into the fluid (ground frame).
+  Vec<D> currentPoint(const Walls<D>& walls) const;
+  Vec<D> currentNormal(const Walls<D>& walls) const;
   const std::vector<std::uint32_t>& patch() const { return patch_; }
 
   /// Pressure [Pa] from the boundary reactions of the last rate evaluation.
@@ -66,6 +74,8 @@ class PressureProbe {
   PressureProbeSpec<D> spec_;
   std::vector<std::uint32_t> patch_;
   double patch_area_ = 0.0;  // |P| s^(D-1) [m^2, m in 2D]
+  bool moving_ = false;      // on a movable surface: point and normal in its body frame
+  Vec<D> body_point_ = Vec<D>::Zero(), body_normal_ = Vec<D>::Zero();
 };
 
 }  // namespace moorsph::fluid
