@@ -244,6 +244,13 @@ BuiltScene<D> buildScene(const SceneConfig& c) {
     p.normal = toVec<D>(pc.normal).normalized();
     p.radius = pc.radius;
     p.interpolation_offset = pc.interpolation_offset;
+    if (pc.on_body) {  // placed by the body's motion when the probe is made (pressure_probe.hpp)
+      p.body_frame = true;
+      p.boundary_spacing = spacing;
+      out.probe_names.push_back(pc.name);
+      out.probes.push_back(p);
+      continue;
+    }
     // Each boundary particle stands for a tile of the lattice steps along the face.
     int normal_axis = 0;
     p.normal.cwiseAbs().maxCoeff(&normal_axis);

@@ -2,6 +2,8 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <limits>
+#include <moorsph/io/body_geometry.hpp>
 #include <moorsph/io/mesh_sampling.hpp>
 #include <moorsph/io/primitive_shapes.hpp>
 #include "scene_sections.hpp"
@@ -150,6 +152,25 @@ double distanceToSurface(const SceneConfig& c, const std::string& name, const Tr
   return 0.0;
 }
 
+/// Distance [m] from a body-frame point to the sampled surface of the named body.
+double distanceToBodySurface(const SceneConfig& c, const std::string& name, const Triple& p) {
+  double best = std::numeric_limits<double>::infinity();
+  for (const auto& b : c.bodies) {
+    if (b.name != name) continue;
+    const Eigen::Vector3d point(p[0], p[1], p[2]);
+    auto nearest = [&](const auto& particles, const Triple& start) {
+      for (const auto& r : particles.r) {
+        Eigen::Vector3d offset = Eigen::Vector3d::Zero();
+        for (int k = 0; k < r.size(); ++k) offset[k] = r[k] - start[k];
+        best = std::min(best, (offset - point).norm());
+      }
+    };
+    if (c.dim == 2) nearest(sampleBodySurface<2>(b, c.spacing()), b.start());
+    else nearest(sampleBodySurface<3>(b, c.spacing()), b.start());
+  }
+  return best;
+}
+
 }  // namespace
 
 Triple toTriple(const std::vector<double>& v) {
@@ -277,11 +298,15 @@ void readSensors(MapReader& top, SceneConfig& c) {
         names.push_back(k.name);
         if (k.name == p.surface) found = k.track_reaction = true;
       }
+      for (const auto& b : c.bodies) {
+        names.push_back(b.name);
+        if (b.name == p.surface && !found) found = p.on_body = true;
+      }
       if (!found) {
         const std::string guess = closestWord(p.surface, names);
-        m.fail("surface", "no tank, box, mesh, sphere or cylinder is named '" + p.surface + "'" + (guess.empty() ? "" : " (did you mean '" + guess + "'?)"));
+        m.fail("surface", "no tank, box, mesh, sphere, cylinder or body is named '" + p.surface + "'" + (guess.empty() ? "" : " (did you mean '" + guess + "'?)"));
       }
-      const double off = distanceToSurface(c, p.surface, p.point);
+      const double off = p.on_body ? distanceToBodySurface(c, p.surface, p.point) : distanceToSurface(c, p.surface, p.point);
       if (off > c.spacing()) {
         char msg[200];
         std::snprintf(msg, sizeof msg, "the point is %.3g m from the surface '%s': expected on it (within the boundary spacing %g m)",

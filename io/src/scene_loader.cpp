@@ -179,8 +179,8 @@ SceneConfig readScene(const YAML::Node& root, const YamlSource& source) {
     f.fail("sound_speed", msg);
   }
   detail::readWaveMakers(top, c);
-  detail::readSensors(top, c);
   detail::readBodies(top, c);
+  detail::readSensors(top, c);  // after the bodies: a probe may sit on one
   // The "bodies" effect runs exactly when the scene has bodies: added to the default
   // effect list, required in (and only in) an explicit one.
   if (!c.bodies.empty() && !c.hasEffect("bodies")) {

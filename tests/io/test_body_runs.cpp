@@ -17,6 +17,7 @@
 #include <vector>
 #include <moorsph/io/checkpoint.hpp>
 #include <moorsph/io/csv_export.hpp>
+#include <moorsph/io/scene_loader.hpp>
 #include "run/run_scene.hpp"
 #include "run/scene_bodies.hpp"
 #include "scene_text.hpp"
@@ -294,4 +295,41 @@ TEST(BodyRuns, SnapshotPackingRoundTrips) {
   EXPECT_EQ(r.lines[0].internalState, l.internalState);
   EXPECT_EQ(r.dissipated, 0.5);
   EXPECT_EQ(r.externalWork, -0.25);
+}
+
+// Pressure probes on a body: point and normal in the body frame, carried with it. The
+// floating box's bottom face sits at its draught, 0.05 m: the probe there reads the
+// hydrostatic rho g 0.05 = 490.5 Pa; the top face is dry. A point off the body is refused.
+TEST(BodyRuns, PressureProbesRideOnTheBody) {
+  const std::string dir = freshDir("moorsph_body_probes");
+  std::string text = kBox;
+  text.replace(text.find("moorings:"), 0,
+               "pressure_probes:\n  - {name: keel, surface: box, point: [0, -0.05], normal: [0, -1]}\n"
+               "  - {name: deck, surface: box, point: [0, 0.05], normal: [0, 1]}\n");
+  const auto c = io::loadSceneText(text, "s.yaml");
+  ASSERT_EQ(c.probes.size(), 2u);
+  EXPECT_TRUE(c.probes[0].on_body);
+  const std::string scene = test::writeScene(dir + "/scene.yaml", text);
+  ASSERT_EQ(app::runScene(options(scene, dir + "/run", 0.2)), app::kSuccess);
+  ASSERT_GT(io::exportSeriesCsv(dir + "/run").size(), 0u);
+  const auto keel = column(dir + "/run", "probes.keel_reaction");
+  const auto deck = column(dir + "/run", "probes.deck_reaction");
+  ASSERT_EQ(keel.size(), 21u);
+  double k = 0.0, d = 0.0;
+  for (std::size_t i = 6; i < keel.size(); ++i) {
+    k += keel[i] / static_cast<double>(keel.size() - 6);
+    d += deck[i] / static_cast<double>(keel.size() - 6);
+  }
+  std::printf("keel %.1f Pa (hydrostatic at the draught 490.5 Pa), deck %.1f Pa\n", k, d);
+  EXPECT_NEAR(k, 1000.0 * 9.81 * 0.05, 0.25 * 490.5);
+  EXPECT_LT(std::abs(d), 0.05 * 490.5);
+
+  std::string off = text;
+  off.replace(off.find("point: [0, 0.05]"), 16, "point: [0, 0.15]");
+  try {
+    io::loadSceneText(off, "s.yaml");
+    ADD_FAILURE() << "a probe 0.1 m off the body was accepted";
+  } catch (const io::SceneError& e) {
+    EXPECT_NE(std::string(e.what()).find("from the surface 'box'"), std::string::npos) << e.what();
+  }
 }

@@ -14,6 +14,14 @@ PressureProbe<D>::PressureProbe(PressureProbeSpec<D> spec, const Walls<D>& walls
   if (!walls.surfaces()[spec_.surface].track_reaction)
     throw std::invalid_argument("pressure probe: surface '" + walls.surfaces()[spec_.surface].name +
                                 "' does not track reactions");
+  if (spec_.body_frame) {  // placed by the surface's motion now
+    if (!walls.surfaces()[spec_.surface].movable)
+      throw std::invalid_argument("pressure probe: a body-frame point needs a movable surface");
+    const RigidMotion<D>& m = walls.surfaceMotion(spec_.surface);
+    spec_.point = m.position + m.rotation * spec_.point;
+    spec_.normal = m.rotation * spec_.normal;
+    spec_.body_frame = false;
+  }
   const BoundaryParticles<D>& b = walls.particles();
   for (std::size_t k = 0; k < b.size(); ++k) {
     if (b.surface[k] != spec_.surface) continue;

@@ -46,6 +46,9 @@ struct PressureProbeSpec {
   double radius = 0.0;              ///< patch radius for the reaction estimate [m]
   double boundary_spacing = 0.0;    ///< spacing of the surface's particles [m]
   double interpolation_offset = 0.0;  ///< distance of r0 in front of the wall [m]
+  /// point and normal are in the body frame of a movable surface (relative to its
+  /// reference point, in its axes) instead of the ground frame.
+  bool body_frame = false;
 };
 
 template <int D>

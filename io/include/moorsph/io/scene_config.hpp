@@ -123,7 +123,8 @@ struct GaugeConfig {
 
 struct ProbeConfig {
   std::string name;
-  std::string surface;          ///< name of a tank or box
+  std::string surface;          ///< name of a tank, box, mesh, sphere, cylinder or body
+  bool on_body = false;         ///< surface names a body: point and normal in its body frame
   Triple point{0.0, 0.0, 0.0};  ///< [m]
   Triple normal{0.0, 0.0, 0.0}; ///< into the fluid
   double radius = 0.0;          ///< [m]; 0: dx
