@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <stdexcept>
 #include <moorsph/bodies/mooring_factory.hpp>
+#include <moorsph/coupling/green_water.hpp>
 #include <moorsph/io/body_geometry.hpp>
 
 namespace moorsph::app {
@@ -203,6 +204,42 @@ bodies::SystemSnapshot unpackSnapshot(const std::vector<double>& in) {
 
 // ---- series ----
 
+/// points_<body>: ground positions of the centre of mass and of the scene's named
+/// body-frame points (bow and stern heights, CoM surge/heave/sway).
+template <int D>
+void attachPointSeries(cases::RunRecorder<D>& recorder, const coupling::CoSimulation<D>& co, const io::BodyConfig& b,
+                       int body) {
+  std::vector<std::pair<std::string, Eigen::Vector3d>> points{
+      {"com", Eigen::Vector3d(b.centre_of_mass[0], b.centre_of_mass[1], b.centre_of_mass[2])}};
+  for (const auto& [name, p] : b.points) points.emplace_back(name, Eigen::Vector3d(p[0], p[1], p[2]));
+  std::vector<io::SeriesColumn> columns;
+  for (const auto& [name, p] : points)
+    for (int k = 0; k < D; ++k) columns.push_back({name + "_" + "xyz"[k], "m"});
+  recorder.addSeries("points_" + b.name, columns, [&co, body, points](const fluid::FluidSimulation<D>&) {
+    const bodies::BodyKinematics k = co.bodies().kinematics(body);
+    std::vector<double> v;
+    for (const auto& [name, p] : points) {
+      const Eigen::Vector3d g = k.pointToGround(p);
+      for (int a = 0; a < D; ++a) v.push_back(g[a]);
+    }
+    return v;
+  }, "ground positions of the body's centre of mass (com) and named points (bodies[].points)");
+}
+
+/// green_water_<body>: fluid volume above the deck inside its outline.
+template <int D>
+void attachGreenWaterSeries(cases::RunRecorder<D>& recorder, const coupling::CoSimulation<D>& co,
+                            const io::BodyConfig& b, int body) {
+  coupling::DeckOutline deck;
+  deck.deck_height = b.deck_height;
+  for (const auto& p : b.deck_outline) deck.outline.emplace_back(p[0], p[1]);
+  recorder.addSeries("green_water_" + b.name, {{"volume", D == 2 ? "m^2/m" : "m^3"}},
+                     [&co, body, deck](const fluid::FluidSimulation<D>& s) {
+                       return std::vector<double>{coupling::greenWaterVolume<D>(s.fluid(), co.bodies().kinematics(body), deck)};
+                     },
+                     "green water: fluid volume above the deck (body-frame y > deck_height) inside the deck outline");
+}
+
 template <int D>
 void attachBodySeries(cases::RunRecorder<D>& recorder, const coupling::CoSimulation<D>& co, const io::SceneConfig& c) {
   const std::string per_span = D == 2 ? "/m" : "";
@@ -244,6 +281,8 @@ void attachBodySeries(cases::RunRecorder<D>& recorder, const coupling::CoSimulat
       v.push_back(w.torque.z());
       return v;
     }, "fluid wrench applied to the body (ground frame, moment about the reference point; ramped as coupling.ramp_time says)");
+    attachPointSeries(recorder, co, c.bodies[k], body);
+    if (c.bodies[k].green_water) attachGreenWaterSeries(recorder, co, c.bodies[k], body);
   }
   for (std::size_t k = 0; k < c.moorings.size(); ++k) {
     const int line = static_cast<int>(k);

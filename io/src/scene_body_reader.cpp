@@ -8,6 +8,8 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <moorsph/io/mesh_sampling.hpp>
 #include <moorsph/io/primitive_shapes.hpp>
 #include "scene_sections.hpp"
@@ -156,6 +158,59 @@ bool surfaceNameTaken(const SceneConfig& c, const std::string& name) {
   return c.bodyIndex(name) >= 0;
 }
 
+/// bodies[].points: {name: [x, y(, z)], ...} in the body frame.
+void readPoints(MapReader& b, BodyConfig& body, const SceneConfig& c) {
+  const YAML::Node node = b.child("points");
+  if (!node.IsDefined() || node.IsNull()) return;
+  if (!node.IsMap()) b.fail("points", "expected a map of named body-frame points, e.g. {bow: [0, 23.5, 0]}, got " + describeNode(node));
+  MapReader m(node, b.childPath("points"), b.source());
+  for (const auto& item : node) {
+    const std::string name = item.first.as<std::string>();
+    if (name == "com") m.fail(name, "'com' is recorded anyway (the centre of mass); pick another name");
+    body.points.emplace_back(name, toTriple(m.vector(name, c.dim)));
+  }
+  m.finish();
+}
+
+/// The deck outline file: rows x, z or x, y, z (y ignored), body frame [m].
+void readOutlineFile(MapReader& m, BodyConfig& body, const SceneConfig& c) {
+  const std::string file = m.requiredText("outline_file");
+  const std::filesystem::path path(file);
+  body.deck_outline_file = path.is_absolute() ? file : (std::filesystem::path(c.file).parent_path() / path).string();
+  std::ifstream in(body.deck_outline_file);
+  if (!in) m.fail("outline_file", "cannot open the deck outline '" + body.deck_outline_file + "'");
+  int line_number = 0;
+  for (std::string line; std::getline(in, line);) {
+    ++line_number;
+    if (line.empty() || !(std::isdigit(static_cast<unsigned char>(line[0])) || line[0] == '-' || line[0] == '.')) continue;
+    std::replace(line.begin(), line.end(), ',', ' ');
+    std::istringstream words(line);
+    std::vector<double> v;
+    for (double x = 0.0; words >> x;) v.push_back(x);
+    if (v.size() != 2 && v.size() != 3)
+      m.fail("outline_file", body.deck_outline_file + ":" + std::to_string(line_number) + ": expected x, z or x, y, z [m]");
+    body.deck_outline.push_back({v.front(), v.back()});
+  }
+  if (body.deck_outline.size() < 3) m.fail("outline_file", "the deck outline needs at least three vertices (x, z)");
+}
+
+/// bodies[].green_water: {deck_height, outline_file (3D) | x_range (2D)}.
+void readGreenWater(MapReader& b, BodyConfig& body, const SceneConfig& c) {
+  const YAML::Node node = b.child("green_water");
+  if (!node.IsDefined() || node.IsNull()) return;
+  MapReader m(node, b.childPath("green_water"), b.source());
+  body.green_water = true;
+  body.deck_height = m.requiredNumber("deck_height");
+  if (c.dim == 3) {
+    readOutlineFile(m, body, c);
+  } else {
+    const auto r = m.vector("x_range", 2);
+    if (!(r[1] > r[0])) m.fail("x_range", "expected [x_min, x_max] with x_max > x_min [m]");
+    body.deck_outline = {{r[0], 0.0}, {r[1], 0.0}};
+  }
+  m.finish();
+}
+
 BodyConfig readBody(MapReader& b, const SceneConfig& c, std::size_t index) {
   BodyConfig body;
   body.name = b.text("name", "body" + std::to_string(index));
@@ -177,6 +232,8 @@ BodyConfig readBody(MapReader& b, const SceneConfig& c, std::size_t index) {
   body.offset = toTriple(b.vector("offset", c.dim, std::vector<double>(c.dim, 0.0)));
   body.velocity = toTriple(b.vector("velocity", c.dim, std::vector<double>(c.dim, 0.0)));
   readShape(b, body, c);
+  readPoints(b, body, c);
+  readGreenWater(b, body, c);
   body.where.text = b.source().locate(b.node(), b.path());
   // The body must start in the water's container (or the domain).
   const Triple s = body.start();

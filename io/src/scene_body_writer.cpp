@@ -62,6 +62,18 @@ void body(YAML::Emitter& e, const BodyConfig& b, int dim) {
   vec(e, "offset", b.offset, dim);
   vec(e, "velocity", b.velocity, dim);
   shape(e, b.shape, dim);
+  if (!b.points.empty()) {
+    e << YAML::Key << "points" << YAML::Value << YAML::BeginMap;
+    for (const auto& [name, p] : b.points) vec(e, name.c_str(), p, dim);
+    e << YAML::EndMap;
+  }
+  if (b.green_water) {
+    e << YAML::Key << "green_water" << YAML::Value << YAML::Flow << YAML::BeginMap;
+    e << YAML::Key << "deck_height" << YAML::Value << b.deck_height;
+    if (dim == 3) e << YAML::Key << "outline_file" << YAML::Value << std::filesystem::absolute(b.deck_outline_file).string();
+    else vec(e, "x_range", Triple{b.deck_outline[0][0], b.deck_outline[1][0], 0.0}, 2);
+    e << YAML::EndMap;
+  }
   e << YAML::EndMap;
 }
 

@@ -333,3 +333,43 @@ TEST(BodyRuns, PressureProbesRideOnTheBody) {
     EXPECT_NE(std::string(e.what()).find("from the surface 'box'"), std::string::npos) << e.what();
   }
 }
+
+// Named body points and green water. The points ride rigidly with the body (stern - bow
+// = R (0.2, 0) at every output); a 0.04 m layer of water placed on the deck reads its
+// lattice volume at t = 0 and never more than that later.
+TEST(BodyRuns, BodyPointsAndGreenWater) {
+  const std::string dir = freshDir("moorsph_body_points");
+  std::string text = kBox;
+  text.replace(text.find("  - water: {lower: [0, 0], upper: [0.8, 0.2]}"), 0,
+               "  - water: {lower: [0.3, 0.25], upper: [0.5, 0.29]}\n");
+  text.replace(text.find("    shape: {box:"), 0,
+               "    points: {bow: [-0.1, 0.05], stern: [0.1, 0.05]}\n"
+               "    green_water: {deck_height: 0.05, x_range: [-0.1, 0.1]}\n");
+  text.replace(text.find("sound_speed: 20"), 15, "sound_speed: 24");
+  const auto c = io::loadSceneText(text, "s.yaml");
+  ASSERT_EQ(c.bodies[0].points.size(), 2u);
+  const auto again = io::loadSceneText(io::resolvedSceneYaml(c), "r.yaml");
+  EXPECT_EQ(again.bodies[0].points[1].first, "stern");
+  EXPECT_TRUE(again.bodies[0].green_water);
+  const std::string scene = test::writeScene(dir + "/scene.yaml", text);
+  ASSERT_EQ(app::runScene(options(scene, dir + "/run", 0.2)), app::kSuccess);
+  ASSERT_GT(io::exportSeriesCsv(dir + "/run").size(), 0u);
+  const auto bow_x = column(dir + "/run", "points_box.bow_x"), bow_y = column(dir + "/run", "points_box.bow_y");
+  const auto stern_x = column(dir + "/run", "points_box.stern_x"), stern_y = column(dir + "/run", "points_box.stern_y");
+  const auto com_y = column(dir + "/run", "points_box.com_y"), y = column(dir + "/run", "body_box.y");
+  const auto angle = column(dir + "/run", "body_box.angle");
+  ASSERT_EQ(bow_x.size(), 21u);
+  EXPECT_DOUBLE_EQ(bow_x[0], 0.3);
+  EXPECT_DOUBLE_EQ(bow_y[0], 0.25);
+  for (std::size_t k = 0; k < bow_x.size(); ++k) {
+    EXPECT_NEAR(stern_x[k] - bow_x[k], 0.2 * std::cos(angle[k]), 1e-12);
+    EXPECT_NEAR(stern_y[k] - bow_y[k], 0.2 * std::sin(angle[k]), 1e-12);
+    EXPECT_NEAR(com_y[k], y[k], 1e-12);  // the centre of mass is the reference point here
+  }
+  const auto green = column(dir + "/run", "green_water_box.volume");
+  // Two rows of ten particles of 0.02 x 0.02 m (slightly compressed: hydrostatic start).
+  EXPECT_NEAR(green[0], 20 * 0.0004, 0.01 * 20 * 0.0004);
+  for (double v : green) EXPECT_LE(v, 1.02 * green[0]);
+  std::printf("green water %.5f m^2/m at t = 0, %.5f at 0.2 s; bow y %.4f -> %.4f m\n", green[0], green.back(), bow_y[0],
+              bow_y.back());
+}

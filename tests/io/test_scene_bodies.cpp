@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <cstdlib>
+#include <fstream>
 #include <string>
 #include <moorsph/io/body_geometry.hpp>
 #include <moorsph/io/scene_builder.hpp>
@@ -259,4 +260,26 @@ TEST(SceneBodies, MeshAndCylinderBodiesAreSampledInTheirBodyFrame) {
     const Eigen::Vector3d d = r - centre;
     EXPECT_FALSE(std::hypot(d.x(), d.z()) < 0.05 && std::abs(d.y()) < 0.075) << "water inside the body at " << r.transpose();
   }
+}
+
+// 3D green water reads its deck outline from a CSV (x, y, z rows: y ignored) next to the
+// scene; a missing file or a bad row is refused naming the key; points need D numbers.
+TEST(SceneBodies, DeckOutlineFileAndPoints) {
+  const std::string dir = testing::TempDir();
+  std::ofstream(dir + "/deck.csv") << "x,y,z\n-0.1,0.1,-0.1\n0.1,0.1,-0.1\n0.1,0.1,0.1\n-0.1,0.1,0.1\n";
+  std::string text = kBuoy;
+  text.replace(text.find("    shape: {sphere"), 0,
+               "    points: {top: [0, 0.1015, 0]}\n    green_water: {deck_height: 0.05, outline_file: " + dir +
+                   "/deck.csv}\n");
+  const auto c = io::loadSceneText(text, "s.yaml");
+  ASSERT_EQ(c.bodies[0].deck_outline.size(), 4u);
+  EXPECT_EQ(c.bodies[0].deck_outline[2][0], 0.1);
+  EXPECT_EQ(c.bodies[0].deck_outline[2][1], 0.1);
+  EXPECT_EQ(c.bodies[0].points[0].second[1], 0.1015);
+  std::string missing = text;
+  missing.replace(missing.find("/deck.csv"), 9, "/none.csv");
+  EXPECT_TRUE(has(errorOf(missing), "'bodies[0].green_water.outline_file': cannot open the deck outline")) << errorOf(missing);
+  std::string flat = text;
+  flat.replace(flat.find("top: [0, 0.1015, 0]"), 19, "top: [0, 0.1015]");
+  EXPECT_TRUE(has(errorOf(flat), "'bodies[0].points.top'")) << errorOf(flat);
 }

@@ -6,6 +6,7 @@
 #include <array>
 #include <limits>
 #include <string>
+#include <utility>
 #include <vector>
 #include <moorsph/fluid/method_parameters.hpp>
 #include <moorsph/io/triangle_mesh.hpp>
@@ -160,6 +161,13 @@ struct BodyConfig {
   Triple offset{0.0, 0.0, 0.0};            ///< initial displacement from `position` [m]
   Triple velocity{0.0, 0.0, 0.0};          ///< initial velocity [m/s]
   BodyShapeConfig shape;
+  /// Named body-frame points whose ground positions are recorded (e.g. bow, stern) [m].
+  std::vector<std::pair<std::string, Triple>> points;
+  /// Green water on the deck (coupling/green_water.hpp): off unless the scene gives it.
+  bool green_water = false;
+  double deck_height = 0.0;                        ///< body-frame y of the deck [m]
+  std::string deck_outline_file;                   ///< resolved path, or "" when given inline
+  std::vector<std::array<double, 2>> deck_outline; ///< 3D: (x, z) polygon; 2D: x_min, x_max [m]
   SourceLocation where;
   /// Reference point at t = 0: position + offset.
   Triple start() const { return {position[0] + offset[0], position[1] + offset[1], position[2] + offset[2]}; }
