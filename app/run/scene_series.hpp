@@ -7,6 +7,7 @@
 #include <vector>
 #include <moorsph/cases/run_recorder.hpp>
 #include <moorsph/io/scene_builder.hpp>
+#include "moving_mean.hpp"
 
 namespace moorsph::app {
 
@@ -23,6 +24,10 @@ class SceneSeries {
       }
     }
     probe_names_ = built.probe_names;
+    for (std::size_t k = 0; k < built.probes.size(); ++k) {
+      const double window = k < built.probe_means.size() ? built.probe_means[k] : 0.0;
+      means_.push_back({MovingMean(window), MovingMean(window), window > 0.0});
+    }
   }
 
   void attach(cases::RunRecorder<D>& recorder) {
@@ -39,20 +44,31 @@ class SceneSeries {
     }
     if (!probes_.empty()) {
       std::vector<io::SeriesColumn> columns;
-      for (const auto& n : probe_names_) {
+      for (std::size_t k = 0; k < probe_names_.size(); ++k) {
+        const std::string& n = probe_names_[k];
         columns.push_back({n + "_reaction", "Pa"});
         columns.push_back({n + "_interpolated", "Pa"});
+        if (means_[k].on) {
+          columns.push_back({n + "_reaction_mean", "Pa"});
+          columns.push_back({n + "_interpolated_mean", "Pa"});
+        }
       }
       recorder.addSeries("probes", columns,
                          [this](const fluid::FluidSimulation<D>& s) {
                            std::vector<double> v;
-                           for (const auto& p : probes_) {
-                             v.push_back(p.readReaction(s));
-                             v.push_back(p.readInterpolated(s));
+                           for (std::size_t k = 0; k < probes_.size(); ++k) {
+                             v.push_back(probes_[k].readReaction(s));
+                             v.push_back(probes_[k].readInterpolated(s));
+                             if (means_[k].on) {
+                               const double reaction = v[v.size() - 2], interpolated = v.back();
+                               v.push_back(means_[k].reaction.add(s.time(), reaction));
+                               v.push_back(means_[k].interpolated.add(s.time(), interpolated));
+                             }
                            }
                            return v;
                          },
-                         "wall pressure probes: from the boundary reactions and SPH-interpolated in front of the wall");
+                         "wall pressure probes: from the boundary reactions and SPH-interpolated in front of the wall; "
+                         "*_mean: trailing moving mean over pressure_probes[].moving_mean of the recorded outputs");
     }
   }
 
@@ -61,6 +77,11 @@ class SceneSeries {
   std::vector<fluid::WaveGauge<D>> gauges_;
   std::vector<std::string> probe_names_;
   std::vector<fluid::PressureProbe<D>> probes_;
+  struct Means {
+    MovingMean reaction, interpolated;
+    bool on;
+  };
+  std::vector<Means> means_;
 };
 
 }  // namespace moorsph::app

@@ -248,6 +248,7 @@ BuiltScene<D> buildScene(const SceneConfig& c) {
       p.body_frame = true;
       p.boundary_spacing = spacing;
       out.probe_names.push_back(pc.name);
+      out.probe_means.push_back(pc.moving_mean);
       out.probes.push_back(p);
       continue;
     }
@@ -267,6 +268,7 @@ BuiltScene<D> buildScene(const SceneConfig& c) {
       p.boundary_spacing = mesh_tiles[p.surface];
     }
     out.probe_names.push_back(pc.name);
+    out.probe_means.push_back(pc.moving_mean);
     out.probes.push_back(p);
   }
   return out;

@@ -279,6 +279,7 @@ void readSensors(MapReader& top, SceneConfig& c) {
       p.normal = toTriple(m.vector("normal", c.dim));
       p.radius = m.positive("radius", c.dx, "patch radius [m]");
       p.interpolation_offset = m.positive("interpolation_offset", 1.5 * c.dx, "distance in front of the wall [m]");
+      p.moving_mean = m.positive("moving_mean", 0.0, "window of the trailing moving mean [s]", true);
       if (std::hypot(p.normal[0], p.normal[1], p.normal[2]) == 0.0) m.fail("normal", "expected a non-zero normal into the fluid");
       bool found = false;
       std::vector<std::string> names;

@@ -173,7 +173,8 @@ std::string resolvedSceneYaml(const SceneConfig& c) {
       vec(e, "point", p.point, c.dim);
       vec(e, "normal", p.normal, c.dim);
       e << YAML::Key << "radius" << YAML::Value << p.radius;
-      e << YAML::Key << "interpolation_offset" << YAML::Value << p.interpolation_offset << YAML::EndMap;
+      e << YAML::Key << "interpolation_offset" << YAML::Value << p.interpolation_offset;
+      e << YAML::Key << "moving_mean" << YAML::Value << p.moving_mean << YAML::EndMap;
     }
     e << YAML::EndSeq;
   }

@@ -304,7 +304,7 @@ TEST(BodyRuns, PressureProbesRideOnTheBody) {
   const std::string dir = freshDir("moorsph_body_probes");
   std::string text = kBox;
   text.replace(text.find("moorings:"), 0,
-               "pressure_probes:\n  - {name: keel, surface: box, point: [0, -0.05], normal: [0, -1]}\n"
+               "pressure_probes:\n  - {name: keel, surface: box, point: [0, -0.05], normal: [0, -1], moving_mean: 0.03}\n"
                "  - {name: deck, surface: box, point: [0, 0.05], normal: [0, 1]}\n");
   const auto c = io::loadSceneText(text, "s.yaml");
   ASSERT_EQ(c.probes.size(), 2u);
@@ -321,6 +321,24 @@ TEST(BodyRuns, PressureProbesRideOnTheBody) {
     d += deck[i] / static_cast<double>(keel.size() - 6);
   }
   std::printf("keel %.1f Pa (hydrostatic at the draught 490.5 Pa), deck %.1f Pa\n", k, d);
+  // The 0.03 s trailing mean over the ~0.01 s outputs: the mean of the samples in (t - 0.03, t].
+  const auto mean = column(dir + "/run", "probes.keel_reaction_mean");
+  std::vector<double> t;
+  {
+    std::ifstream in(dir + "/run/csv/probes.keel_reaction.csv");
+    std::string line;
+    std::getline(in, line);
+    while (std::getline(in, line)) t.push_back(std::stod(line.substr(0, line.find(','))));
+  }
+  ASSERT_EQ(mean.size(), keel.size());
+  ASSERT_EQ(t.size(), keel.size());
+  for (std::size_t i = 0; i < keel.size(); ++i) {
+    double sum = 0.0;
+    int n = 0;
+    for (std::size_t j = 0; j <= i; ++j)
+      if (t[j] > t[i] - 0.03) sum += keel[j], ++n;
+    EXPECT_NEAR(mean[i], sum / n, 1e-9) << "output " << i;
+  }
   EXPECT_NEAR(k, 1000.0 * 9.81 * 0.05, 0.25 * 490.5);
   EXPECT_LT(std::abs(d), 0.05 * 490.5);
 

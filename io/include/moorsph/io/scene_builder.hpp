@@ -18,6 +18,7 @@ struct BuiltScene {
   std::vector<std::string> gauge_names;
   std::vector<fluid::WaveGaugeSpec<D>> gauges;
   std::vector<std::string> probe_names;
+  std::vector<double> probe_means;  ///< per probe: moving-mean window [s], 0 = none
   std::vector<fluid::PressureProbeSpec<D>> probes;
   std::size_t piston_surface = 0;  ///< index of the piston's surface, if the scene has one
   /// Per body of the scene (in order): its surface, movable and reaction-tracking,

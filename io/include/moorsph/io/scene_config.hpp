@@ -130,6 +130,7 @@ struct ProbeConfig {
   Triple normal{0.0, 0.0, 0.0}; ///< into the fluid
   double radius = 0.0;          ///< [m]; 0: dx
   double interpolation_offset = 0.0;  ///< [m]; 0: 1.5 dx
+  double moving_mean = 0.0;     ///< [s]; > 0 adds trailing means over this window (recorded outputs)
 };
 
 
