@@ -8,8 +8,6 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <moorsph/io/mesh_sampling.hpp>
 #include <moorsph/io/primitive_shapes.hpp>
 #include "scene_sections.hpp"
@@ -174,22 +172,11 @@ void readPoints(MapReader& b, BodyConfig& body, const SceneConfig& c) {
 
 /// The deck outline file: rows x, z or x, y, z (y ignored), body frame [m].
 void readOutlineFile(MapReader& m, BodyConfig& body, const SceneConfig& c) {
-  const std::string file = m.requiredText("outline_file");
-  const std::filesystem::path path(file);
-  body.deck_outline_file = path.is_absolute() ? file : (std::filesystem::path(c.file).parent_path() / path).string();
-  std::ifstream in(body.deck_outline_file);
-  if (!in) m.fail("outline_file", "cannot open the deck outline '" + body.deck_outline_file + "'");
-  int line_number = 0;
-  for (std::string line; std::getline(in, line);) {
-    ++line_number;
-    if (line.empty() || !(std::isdigit(static_cast<unsigned char>(line[0])) || line[0] == '-' || line[0] == '.')) continue;
-    std::replace(line.begin(), line.end(), ',', ' ');
-    std::istringstream words(line);
-    std::vector<double> v;
-    for (double x = 0.0; words >> x;) v.push_back(x);
-    if (v.size() != 2 && v.size() != 3)
-      m.fail("outline_file", body.deck_outline_file + ":" + std::to_string(line_number) + ": expected x, z or x, y, z [m]");
-    body.deck_outline.push_back({v.front(), v.back()});
+  body.deck_outline_file = resolveSceneFile(c, m.requiredText("outline_file"));
+  for (const NumberRow& row : readNumberRows(m, "outline_file", body.deck_outline_file, "deck outline")) {
+    if (row.values.size() != 2 && row.values.size() != 3)
+      m.fail("outline_file", body.deck_outline_file + ":" + std::to_string(row.line) + ": expected x, z or x, y, z [m]");
+    body.deck_outline.push_back({row.values.front(), row.values.back()});
   }
   if (body.deck_outline.size() < 3) m.fail("outline_file", "the deck outline needs at least three vertices (x, z)");
 }

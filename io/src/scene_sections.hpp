@@ -19,6 +19,18 @@ void writeBodySections(YAML::Emitter& e, const SceneConfig& config);
 /// Reads `method` on top of the reference preset.
 void readMethod(MapReader& top, SceneConfig& config);
 
+/// One numeric row of a CSV file and its line number (for messages).
+struct NumberRow {
+  int line = 0;
+  std::vector<double> values;
+};
+/// A file named in a scene, resolved against the scene file's folder.
+std::string resolveSceneFile(const SceneConfig& c, const std::string& file);
+/// The numeric rows of `path` (header and comment lines skipped); a file that cannot be
+/// opened fails on `key` as "cannot open the <what> '<path>'".
+std::vector<NumberRow> readNumberRows(MapReader& m, const std::string& key, const std::string& path,
+                                      const std::string& what);
+
 /// A vector of the scene's dimension, padded to three entries.
 Triple toTriple(const std::vector<double>& v);
 

@@ -10,19 +10,12 @@ namespace moorsph::io::detail {
 namespace {
 
 void readTable(MapReader& m, PistonConfig& p, const SceneConfig& c) {
-  const std::string file = m.requiredText("file");
-  const std::filesystem::path path(file);
-  p.table = path.is_absolute() ? file : (std::filesystem::path(c.file).parent_path() / path).string();
-  std::ifstream in(p.table);
-  if (!in) m.fail("file", "cannot open the piston signal '" + p.table + "'");
-  int line_number = 0;
-  for (std::string line; std::getline(in, line);) {
-    ++line_number;
-    if (line.empty() || !(std::isdigit(static_cast<unsigned char>(line[0])) || line[0] == '-' || line[0] == '.')) continue;
-    std::replace(line.begin(), line.end(), ',', ' ');
-    std::istringstream words(line);
-    double t = 0.0, x = 0.0;
-    if (!(words >> t >> x)) m.fail("file", p.table + ":" + std::to_string(line_number) + ": expected two numbers t [s], X [m]");
+  p.table = resolveSceneFile(c, m.requiredText("file"));
+  for (const NumberRow& row : readNumberRows(m, "file", p.table, "piston signal")) {
+    if (row.values.size() < 2)
+      m.fail("file", p.table + ":" + std::to_string(row.line) + ": expected two numbers t [s], X [m]");
+    const int line_number = row.line;
+    const double t = row.values[0], x = row.values[1];
     if (!p.table_t.empty() && !(t > p.table_t.back()))
       m.fail("file", p.table + ":" + std::to_string(line_number) + ": times must increase");
     p.table_t.push_back(t);

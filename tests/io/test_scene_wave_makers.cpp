@@ -37,6 +37,16 @@ damping_zones:
   - {x_start: 1.5, x_end: 2.0, k_max: 5}
 )";
 
+// A still 2D tank for the forcing region (its section is appended).
+const char* const kForcingTank = R"(dim: 2
+end_time: 1.0
+resolution: {dx: 0.02}
+effects: [pressure, gravity, walls, forcing_region]
+geometry:
+  - tank: {lower: [0, 0], upper: [2, 0.5]}
+  - water: {lower: [0, 0], upper: [2, 0.3]}
+)";
+
 std::string errorOf(const std::string& text) {
   try {
     io::loadSceneText(text, "w.yaml");
@@ -77,15 +87,9 @@ TEST(SceneWaveMakers, TableSignalAndForcingRegion) {
   ASSERT_EQ(c.piston.table_t.size(), 5u);
   EXPECT_EQ(c.piston.table_x[1], 0.01);
 
-  const std::string forcing = R"(dim: 2
-end_time: 1.0
-resolution: {dx: 0.02}
-effects: [pressure, gravity, walls, forcing_region]
-geometry:
-  - tank: {lower: [0, 0], upper: [2, 0.5]}
-  - water: {lower: [0, 0], upper: [2, 0.3]}
-forcing_region: {x_start: 0.1, length: 0.5, bottom_gap: 0.02, wave: {theory: stokes2, amplitude: 0.01, period: 1.0}}
-)";
+  const std::string forcing = std::string(kForcingTank) +
+                              "forcing_region: {x_start: 0.1, length: 0.5, bottom_gap: 0.02, wave: {theory: stokes2, "
+                              "amplitude: 0.01, period: 1.0}}\n";
   const auto f = io::loadSceneText(forcing, "f.yaml");
   EXPECT_DOUBLE_EQ(f.forcing.still_level, 0.3);
   auto built = io::buildScene<2>(f);
@@ -132,15 +136,8 @@ TEST(SceneWaveMakers, FlumeExampleLoads) {
 // the velocity the region drives is proportional to the gain, a forcing that has ended
 // drives nothing, and a 1 s half-cosine ramp scales the first steps by (1 - cos(pi t))/2.
 TEST(SceneWaveMakers, ForcingGainRampAndEndFromTheScene) {
-  const std::string base = R"(dim: 2
-end_time: 1.0
-resolution: {dx: 0.02}
-effects: [pressure, gravity, walls, forcing_region]
-geometry:
-  - tank: {lower: [0, 0], upper: [2, 0.5]}
-  - water: {lower: [0, 0], upper: [2, 0.3]}
-forcing_region: {x_start: 0.1, length: 1.0, wave: {amplitude: 0.01, period: 1.0}EXTRA}
-)";
+  const std::string base =
+      std::string(kForcingTank) + "forcing_region: {x_start: 0.1, length: 1.0, wave: {amplitude: 0.01, period: 1.0}EXTRA}\n";
   // Velocities by particle id after 20 steps. The region also relaxes the start-up
   // settling of the water toward its target, so the baseline is the same region with a
   // vanishing target (gain 1e-9): the differences are what the target drives.
