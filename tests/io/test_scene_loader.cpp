@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <string>
+#include <moorsph/fluid/waves/dispersion.hpp>
 #include <moorsph/io/scene_builder.hpp>
 #include "spheric_test2.hpp"
 #include <moorsph/io/scene_loader.hpp>
@@ -339,4 +340,30 @@ TEST(SceneLoader, ParticleShiftingAndTheStepGuard) {
   EXPECT_NE(typo.find("did you mean 'coefficient'"), std::string::npos) << typo;
   const std::string frac = errorOf(std::string(kBase) + "method:\n  min_dt_fraction: 1.5\n");
   EXPECT_NE(frac.find("'method.min_dt_fraction': expected a fraction in [0, 1)"), std::string::npos) << frac;
+}
+
+// The METHOD.md 6.2c scenes (cases/buoy_in_waves): the periodic length holds the stated
+// number of wavelengths of linear theory at d = 0.8 m (3, 1, 1) within 0.2%, the water
+// fills it on whole spacings, the forcing ramps over two periods, and the buoy starts at
+// its rest pose with the tether at the pretension.
+TEST(SceneLoader, BuoyInWavesScenesMatchMethod62c) {
+  const struct {
+    int period;
+    int wavelengths;
+    double amplitude;
+  } cases[] = {{1, 3, 0.058}, {2, 1, 0.04}, {3, 1, 0.071}};
+  for (const auto& k : cases) {
+    SCOPED_TRACE(k.period);
+    const auto c = io::loadSceneFile(sourceDir() + "/cases/buoy_in_waves/buoy_waves_T" + std::to_string(k.period) + ".yaml");
+    const double length = c.domain.upper[0] - c.domain.lower[0];
+    const double lambda = fluid::waves::wavelengthFromPeriod(k.period, 0.8);
+    EXPECT_NEAR(length / (k.wavelengths * lambda), 1.0, 2e-3) << "lambda " << lambda;
+    EXPECT_TRUE(c.periodic[0]);
+    EXPECT_NEAR(length / c.dx, std::round(length / c.dx), 1e-6);
+    EXPECT_EQ(c.forcing.amplitude, k.amplitude);
+    EXPECT_DOUBLE_EQ(c.forcing.ramp_up, 2.0 * k.period);
+    EXPECT_EQ(c.moorings[0].pretension, 4.366);
+    const auto built = io::buildScene<3>(c);
+    EXPECT_GT(built.scene.fluid.size(), 0u);
+  }
 }
