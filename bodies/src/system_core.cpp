@@ -146,6 +146,9 @@ void SystemCore::build() {
   integ->setMaximumStepSize(options.maxStep);
   integ->setAllowInterpolation(false);  // the advanced state is always at the reported time
   integ->setReturnEveryInternalStep(anyBreakable);
+  // stepTo() returns (ReachedStepLimit) after this many steps, so stepTo() below can
+  // bound the work of one advance (see there).
+  integ->setInternalStepLimit(kStepsPerReturn);
   integ->initialize(s);
   capturedOutput = capture.finish();
   initialized = true;
@@ -196,14 +199,48 @@ void SystemCore::checkBreaks() {
   }
 }
 
+// Bounded work. With forces of a physical size the error-controlled integrator takes
+// about (t - t0)/maxStep steps: the ship of METHOD.md 6.5 under its fluid wrench, held
+// constant per fluid step, takes 18 steps per 0.017 s step at maxStep = 1 ms
+// (tests/bodies/heavy_body_wrench_test.cpp). A wrench out of all scale (a fluid
+// particle in the wall law's singular range gave 5e23 N on the 5e7 kg ship,
+// docs/validation/ship.md finding 2) makes the body spin at ~1e15 rad/s^2, and the
+// error control then shrinks the step without end: the run hung inside Simbody.
+// Allowing kStepBudgetFactor times the nominal count (plus a fixed allowance for the
+// start after each wrench change) turns that into an error naming the forces.
+void SystemCore::throwIfOverBudget(double t0, double t, long steps0) const {
+  const double span = t - t0;
+  const double nominal = std::ceil(span / options.maxStep);
+  const double budget = kStepBudgetFactor * nominal + kStepBudgetAllowance;
+  const long used = static_cast<long>(integ->getNumStepsAttempted()) - steps0;
+  if (static_cast<double>(used) <= budget) return;
+  std::ostringstream msg;
+  msg << "MultibodySystem: the body integrator attempted " << used << " steps and reached t = " << integ->getTime()
+      << " s of the advance from " << t0 << " s to " << t << " s (nominal " << nominal
+      << " steps of at most " << options.maxStep << " s, last step " << integ->getPreviousStepSizeTaken()
+      << " s): the forces on the bodies are out of scale.";
+  const SimTK::State& s = integ->getState();
+  const SimTK::Vector_<SimTK::SpatialVec>& all = external.getAllBodyForces(s);
+  for (std::size_t b = 0; b < specs.size(); ++b) {
+    const SimTK::SpatialVec& w = all[mobods[b].getMobilizedBodyIndex()];
+    msg << " Body '" << specs[b].name << "' (" << specs[b].mass << " kg, weight " << specs[b].mass * options.gravity.norm()
+        << " N): external force " << w[1].norm() << " N, torque " << w[0].norm() << " N m.";
+  }
+  msg << " Check the fluid force (a fluid particle deep in a wall's force law?) and the mooring stiffness.";
+  throw std::runtime_error(msg.str());
+}
+
 void SystemCore::stepTo(double t) {
   // After initialize()/reinitialize() the first stepTo() may return without advancing
   // (StartOfContinuousInterval), and with setReturnEveryInternalStep it returns after
   // each step: loop until the target is really reached. Passing t as the scheduled
   // event time keeps the integrator from stepping past it.
   const double tolerance = 1e-12 * std::max(1.0, std::abs(t));
+  const double t0 = integ->getTime();
+  const long attempts0 = static_cast<long>(integ->getNumStepsAttempted());
   int stalls = 0;
   while (integ->getTime() < t - tolerance) {
+    throwIfOverBudget(t0, t, attempts0);
     const double before = integ->getTime();
     const SimTK::Integrator::SuccessfulStepStatus status = integ->stepTo(t, t);
     if (status == SimTK::Integrator::EndOfSimulation) {

@@ -186,8 +186,14 @@ struct SystemCore {
     return p;
   }
 
+  // Work bound of one stepTo() (system_core.cpp, SystemCore::throwIfOverBudget).
+  static constexpr int kStepsPerReturn = 1000;
+  static constexpr double kStepBudgetFactor = 100.0;
+  static constexpr double kStepBudgetAllowance = 10000.0;
+
   void build();
   void buildCable(LineEntry& line);
+  void throwIfOverBudget(double t0, double t, long attempts0) const;
   void stepTo(double t);
   void checkBreaks();
   void exchangeDynamicLineForces();

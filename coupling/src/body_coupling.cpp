@@ -1,5 +1,6 @@
 #include <moorsph/coupling/body_coupling.hpp>
 #include <moorsph/coupling/body_guard.hpp>
+#include <moorsph/fluid/fluid_simulation.hpp>
 
 #include <cmath>
 #include <stdexcept>
@@ -96,7 +97,15 @@ void BodyCoupling<D>::advanceTo(double t, fluid::StepStage stage) {
       if (t <= options_.release_time) break;  // held: the fluid settles around the bodies
       applyFluidWrenches(t);
       const auto simbody_start = std::chrono::steady_clock::now();
-      system_.advanceTo(t - options_.release_time);
+      try {
+        system_.advanceTo(t - options_.release_time);
+      } catch (const fluid::SimulationError&) {
+        throw;
+      } catch (const std::runtime_error& e) {
+        // E.g. the integrator's work bound (bodies/src/system_core.cpp): stop the run as
+        // for a fluid failure, so the driver writes its failure checkpoint and output.
+        throw fluid::SimulationError("at t = " + std::to_string(t) + " s: " + e.what());
+      }
       body_seconds_ += secondsSince(simbody_start);
       placeSurfaces(t, false);
       if (guard_domain_) checkBodiesInDomain(system_, *walls_, links_, *guard_domain_, guard_sound_speed_, contact_.has_value(), t);
