@@ -8,6 +8,8 @@
 //   B(r_par) = 1 - |r_par|/dx   for |r_par| <= dx, else 0
 //
 // S is continuous with a continuous slope at q = 0.8 (both branches give 1 and -10).
+// Deviation from METHOD.md: behind the boundary particle's plane (r_perp . n_k < 0) q is
+// taken at r_perp . n_k = 0, so the force is bounded by S(b_off dx / h) (see alongNormal).
 // A corner particle with several normals pushes a fluid particle that is in front of
 // two or more of them along the single effective normal pointing straight at it
 // from the corner; in front of exactly one, that normal acts alone. "Straight at it"
@@ -21,6 +23,7 @@
 // The boundary particle feels -F_ik: walls() sums these reactions for the wrench on a
 // body and for pressure sensors. The same function is evaluated on both sides, so
 // action and reaction are equal to the last bit.
+#include <algorithm>
 #include <cmath>
 #include <moorsph/fluid/boundary_particles.hpp>
 
@@ -86,9 +89,18 @@ class BoundaryForceLaw {
   }
 
  private:
+  // Behind the boundary particle's own plane (perp < 0) the push is held at its value
+  // on the plane instead of rising to the singularity at perp = -b_off dx. A fluid
+  // particle gets there only beside a body part thinner than b_off dx, where the far
+  // face's particles would otherwise throw it through the body with unbounded force
+  // (docs/validation/ship.md finding 1: 5e23 N on the ship). A flat wall's fluid does
+  // not get there: the work of the push from q = 1 down to the plane is 0.01 c_s^2
+  // times the integral of S from 0.417 to 1 (h = 1.2 dx), 0.11 c_s^2 per unit mass, so
+  // a particle must arrive at 0.47 c_s, about five times the flow speed WCSPH allows.
   Vec<D> alongNormal(const Vec<D>& r_ik, const Vec<D>& n) const {
     const double perp = r_ik.dot(n);
-    const double s = shape((perp + offset_) * inv_h_);
+    if (perp + offset_ <= 0.0) return Vec<D>::Zero();  // behind the offset wall
+    const double s = shape((std::max(perp, 0.0) + offset_) * inv_h_);
     if (s == 0.0) return Vec<D>::Zero();
     const double par2 = r_ik.squaredNorm() - perp * perp;
     if (par2 >= dx_ * dx_) return Vec<D>::Zero();
