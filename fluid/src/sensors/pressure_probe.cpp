@@ -4,6 +4,15 @@
 #include <stdexcept>
 
 namespace moorsph::fluid {
+namespace {
+
+// A patch particle carries a normal within 30 degrees of the sensor's: the angle within
+// which the mesh sampler joins face normals into one (io/src/mesh_sampling.cpp), so a
+// sensor on a curved hull finds its face at any spacing; faces of a box (90 degrees
+// apart) stay separate.
+constexpr double kFaceCosine = 0.8660254037844386;
+
+}  // namespace
 
 template <int D>
 PressureProbe<D>::PressureProbe(PressureProbeSpec<D> spec, const Walls<D>& walls) : spec_(std::move(spec)) {
@@ -28,7 +37,7 @@ PressureProbe<D>::PressureProbe(PressureProbeSpec<D> spec, const Walls<D>& walls
     if ((b.r[k] - spec_.point).norm() > spec_.radius) continue;
     bool on_face = false;
     for (std::uint32_t a = b.normal_begin[k]; a < b.normal_begin[k + 1]; ++a)
-      on_face = on_face || b.normals[a].dot(spec_.normal) > 0.99;
+      on_face = on_face || b.normals[a].dot(spec_.normal) > kFaceCosine;
     if (on_face) patch_.push_back(static_cast<std::uint32_t>(k));
   }
   if (patch_.empty()) throw std::invalid_argument("pressure probe: no boundary particle of the face within the radius");

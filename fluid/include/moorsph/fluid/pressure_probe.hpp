@@ -55,7 +55,7 @@ template <int D>
 class PressureProbe {
  public:
   /// Selects the patch: boundary particles of `spec.surface` within `spec.radius` of
-  /// the point that carry a normal parallel to `spec.normal`. Throws
+  /// the point that carry a normal within 30 degrees of `spec.normal`. Throws
   /// std::invalid_argument if the surface does not track reactions or the patch is empty.
   PressureProbe(PressureProbeSpec<D> spec, const Walls<D>& walls);
 
