@@ -51,6 +51,7 @@ struct TetheredBuoyTank {
   double release_time = 0.3; ///< bodies held while the fluid settles [s]
   double mu = 1.0e-3;        ///< dynamic viscosity [Pa s] (water)
   double b_off = 0.5;
+  double cfl = 0.5;          ///< CFL number of the fluid step (METHOD.md reference 0.5)
   bool density_diffusion = true;
   double vertical_pull = 0.12;     ///< 6.2a [m]
   double horizontal_pull = 0.508;  ///< 6.2b [m]
@@ -81,6 +82,7 @@ inline TetheredBuoyScene buildTetheredBuoy(const TetheredBuoyTank& t) {
   spec.fluid.sound_speed = 10.0 * std::sqrt(2.0 * b.g * t.depth);  // > 10x the buoy's ~1.3 m/s
   spec.fluid.mu = t.mu;
   spec.fluid.method.boundary_offset = t.b_off;
+  spec.fluid.method.cfl = t.cfl;
   spec.fluid.effects = {"pressure", "viscosity", "xsph", "gravity", "walls"};
   if (t.density_diffusion) spec.fluid.effects.push_back("density_diffusion");
   auto scene = fluid::buildTankScene<3>(spec);
