@@ -52,6 +52,8 @@ struct TetheredBuoyTank {
   double mu = 1.0e-3;        ///< dynamic viscosity [Pa s] (water)
   double b_off = 0.5;
   double cfl = 0.5;          ///< CFL number of the fluid step (METHOD.md reference 0.5)
+  double sound_speed_factor = 10.0;  ///< c_s = factor sqrt(2 g depth) (METHOD.md: 10)
+  double boundary_strength = 0.01;   ///< wall force scale (METHOD.md: 0.01)
   bool density_diffusion = true;
   double vertical_pull = 0.12;     ///< 6.2a [m]
   double horizontal_pull = 0.508;  ///< 6.2b [m]
@@ -79,10 +81,11 @@ inline TetheredBuoyScene buildTetheredBuoy(const TetheredBuoyTank& t) {
   spec.size = fluid::Vec<3>(t.length, t.depth + 0.25, t.width);
   spec.water_upper = fluid::Vec<3>(t.length, t.depth, t.width);
   spec.dx = t.dx;
-  spec.fluid.sound_speed = 10.0 * std::sqrt(2.0 * b.g * t.depth);  // > 10x the buoy's ~1.3 m/s
+  spec.fluid.sound_speed = t.sound_speed_factor * std::sqrt(2.0 * b.g * t.depth);  // > 10x the buoy's ~1.3 m/s
   spec.fluid.mu = t.mu;
   spec.fluid.method.boundary_offset = t.b_off;
   spec.fluid.method.cfl = t.cfl;
+  spec.fluid.method.boundary_strength = t.boundary_strength;
   spec.fluid.effects = {"pressure", "viscosity", "xsph", "gravity", "walls"};
   if (t.density_diffusion) spec.fluid.effects.push_back("density_diffusion");
   auto scene = fluid::buildTankScene<3>(spec);
