@@ -36,6 +36,18 @@ def wavelength(period, depth):
     return 2.0 * math.pi / k
 
 
+def period_amplitude(t, v, period, t0):
+    """Mean over the whole periods after t0 of half of (max - min) within each period."""
+    halves = []
+    start = t0
+    while start + period <= t[-1] + 1e-9:
+        m = (t >= start) & (t < start + period)
+        if m.sum() > 2:
+            halves.append(0.5 * (v[m].max() - v[m].min()))
+        start += period
+    return float(np.mean(halves)) if halves else float("nan")
+
+
 def main():
     p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("run")
@@ -51,6 +63,10 @@ def main():
         x, y = f["body_buoy/x"][:], f["body_buoy/y"][:]
         tension = f["line_tether/fairlead_tension"][:]
         slack = f["line_tether/slack"][:]
+        gauges = {}
+        if "gauges" in f:
+            tg = f["gauges/time"][:]
+            gauges = {k: f[f"gauges/{k}"][:] for k in f["gauges"].keys() if k != "time"}
     x_e, y_e = x[0], y[0]
     xs = (x - x_e) * a.depth / (a.amplitude * lam)
     ys = (y - y_e) / a.amplitude
@@ -58,7 +74,13 @@ def main():
     t0 = a.t0 if a.t0 is not None else t[-1] - 5.0 * a.period
     w = t >= t0
     print(f"T = {a.period} s, a = {a.amplitude} m, d = {a.depth} m, lambda = {lam:.4f} m; window {t0:.2f}-{t[-1]:.2f} s")
-    print(f"heave y*: half peak-to-peak {0.5 * (ys[w].max() - ys[w].min()):.3f}")
+    heave = period_amplitude(t, y, a.period, t0)
+    print(f"heave y*: half peak-to-peak {0.5 * (ys[w].max() - ys[w].min()):.3f}; "
+          f"mean per-period half height {heave / a.amplitude:.3f}")
+    for name, eta in gauges.items():
+        amp = period_amplitude(tg, eta, a.period, t0)
+        print(f"gauge {name}: wave amplitude (mean per-period half height) {amp:.4f} m = {amp / a.amplitude:.3f} "
+              f"of the requested; heave / this amplitude {heave / amp:.3f}")
     print(f"surge x*: half peak-to-peak {0.5 * (xs[w].max() - xs[w].min()):.3f}; "
           f"mean offset {np.mean(x[w]) - x_e:+.4f} m")
     print(f"tether: mean {np.mean(tension[w]):.3f} N, largest {np.max(tension[w]):.3f} N, "
