@@ -52,6 +52,7 @@ int checkDim(const io::SceneConfig& c) {
   const std::size_t nb = sim.walls() ? sim.walls()->particles().size() : 0;
   std::printf("scene %s: %dD '%s', valid\n", c.file.c_str(), D, c.name.c_str());
   std::printf("  particles: %zu fluid, %zu boundary\n", sim.fluid().size(), nb);
+  for (const auto& note : built.notes) std::printf("  note: %s\n", note.c_str());
   std::printf("  dx = %g m, boundary spacing = %g m, h = %g m (h/dx = %g)\n", c.dx, c.spacing(), sim.setup().h(),
               c.method.h_factor);
   std::printf("  c_s = %g m/s (10 sqrt(2 g H) = %g m/s for H = %g m)\n", c.sound_speed, 10.0 * c.expectedSpeed(),

@@ -134,6 +134,7 @@ int runDim(const io::SceneConfig& config, const RunOptions& o, const std::string
   std::string effects;
   for (const auto& e : sim.effectNames()) effects += " " + e;
   log.line("  effects:" + effects + "  (method " + config.method.name + ")");
+  for (const auto& note : built.notes) log.line("  note: " + note);
 #if MOORSPH_HAS_BODIES
   if (co)
     for (const auto& line : describeBodies(config, co->bodies())) log.line("  " + line);

@@ -24,6 +24,9 @@ struct BuiltScene {
   /// Per body of the scene (in order): its surface, movable and reaction-tracking,
   /// with its reference point at the body's start position.
   std::vector<std::size_t> body_surfaces;
+  /// Things the user should know that do not stop the run (printed by `check` and in
+  /// the run's log), e.g. a water block whose height is not a whole number of spacings.
+  std::vector<std::string> notes;
 };
 
 /// Builds the particles. `config.dim` must equal D.
