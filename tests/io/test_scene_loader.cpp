@@ -342,16 +342,18 @@ TEST(SceneLoader, ParticleShiftingAndTheStepGuard) {
   EXPECT_NE(frac.find("'method.min_dt_fraction': expected a fraction in [0, 1)"), std::string::npos) << frac;
 }
 
-// A water block fills whole spacings: one whose height is not a multiple of dx stops
-// short of its top, and the built scene says where (check and run print it); a block of
+// A water block fills whole spacings: one whose size is not a multiple of dx stops short
+// of its upper face, and the built scene says where (check and run print it); a block of
 // whole spacings gets no note. Here 0.2 m at dx = 0.015 m is 13.33 spacings: 13 layers,
 // the surface at 0.195 m.
 TEST(SceneLoader, WaterBlockOfPartSpacingsIsNoted) {
   const auto whole = io::buildScene<2>(io::loadSceneText(kBase, "s.yaml"));
   EXPECT_TRUE(whole.notes.empty());
   const auto part = io::buildScene<2>(io::loadSceneText(kBase, "s.yaml", {"resolution.dx=0.015"}));
-  ASSERT_EQ(part.notes.size(), 1u);
-  EXPECT_NE(part.notes[0].find("water stops at y = 0.195 m"), std::string::npos) << part.notes[0];
+  // Also 0.1 m along x is 6.67 spacings: 6 columns, a 10 mm gap before x = 0.1 m.
+  ASSERT_EQ(part.notes.size(), 2u);
+  EXPECT_NE(part.notes[0].find("water stops at x = 0.09 m"), std::string::npos) << part.notes[0];
+  EXPECT_NE(part.notes[1].find("water stops at y = 0.195 m"), std::string::npos) << part.notes[1];
   double top = 0.0;
   for (const auto& r : part.scene.fluid.r) top = std::max(top, r[1] + 0.5 * 0.015);
   EXPECT_NEAR(top, 0.195, 1e-12);
