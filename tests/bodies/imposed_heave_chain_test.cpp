@@ -28,6 +28,8 @@
 
 #include <gtest/gtest.h>
 
+#include <stdexcept>
+
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -103,6 +105,10 @@ Result runCase(const Case& c, const std::string& amp) {
   const auto ref = readTsv(std::string("WD") + c.depth + "_Chain_ZZP1_" + amp + ".tsv");
   EXPECT_GT(motion.size(), 200u);
   EXPECT_GT(ref.size(), 150u);
+  // Without the reference data (../shared/refdata) stop here with that said, instead of
+  // indexing empty series below (it crashed the test binary).
+  if (motion.empty() || ref.empty())
+    throw std::runtime_error("imposed heave chain: reference series for '" + amp + "' not found in refdata");
   mb::LumpedMassLine line(moorDynChain(c));
   mb::LineEnds a;
   a.anchor = Eigen::Vector3d(c.anchorX, 0.0, c.anchorZ);
