@@ -14,6 +14,11 @@
 // The rocking (roll/pitch about the low CoM, natural period ~0.36 s) is not damped by
 // viscosity, so it is fed by the method, not by the start: see
 // docs/validation/tethered-buoy.md.
+// Session 5: the method does not feed the rocking; the still water's noise forces it.
+// The 3D still water at this spacing keeps rms 0.084 m/s of particle noise (0.042
+// sqrt(g d), 2.5x the 2D floor) and keeps rearranging; the buoy's symmetric start
+// hides it until rounding breaks the symmetry near 2 s (moorsph_buoy_rest_energy,
+// cases/still_water_3d.yaml).
 #include <gtest/gtest.h>
 
 #include <cmath>

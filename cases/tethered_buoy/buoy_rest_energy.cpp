@@ -1,0 +1,104 @@
+// Where the lab buoy left at rest gets the energy that rocks it (issue 5; findings in
+// docs/validation/tethered-buoy.md). Runs the set-up of tests/coupling/test_lab_buoy_rest
+// (D/6 unless told otherwise, tank a whole number of spacings, symmetric about the buoy)
+// and prints every 0.02 s:
+//  - the buoy's tilt (its symmetry axis' x and z components, deg) and the sway of its
+//    centroid from the nominal rest (mm);
+//  - the horizontal fluid force on it and the fluid moment about its centroid (the wall
+//    law pushes along the radial normals of the sphere, so the moment must stay ~0);
+//  - the work the fluid has done on the sway and on the rotation since release (J);
+//  - the fluid's kinetic, potential and elastic energy (J).
+// At the end it prints how far the fluid particles moved up or down, grouped by where
+// they started (next to the sphere, the top layer, the side walls, the floor, the bulk),
+// with the potential energy each group gave up: the still water's own circulation.
+// usage: moorsph_buoy_rest_energy [D/dx] [cfl] [c_s factor] [density diffusion 0|1]
+//                                 [seconds after t = 0.3 s] [release time s]
+// A release time past the end holds the buoy throughout (the fluid alone).
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <vector>
+#include <moorsph/cases/tethered_buoy.hpp>
+
+namespace {
+
+using namespace moorsph;
+
+double argOr(int argc, char** argv, int i, double fallback) { return argc > i ? std::atof(argv[i]) : fallback; }
+
+Eigen::Vector3d toEigen(const fluid::Vec<3>& v) { return {v[0], v[1], v[2]}; }
+
+/// Start positions indexed by particle id (the solver reorders particles by cell).
+std::vector<Eigen::Vector3d> startPositions(const fluid::FluidParticles<3>& f) {
+  std::vector<Eigen::Vector3d> r0(f.size());
+  for (std::size_t i = 0; i < f.size(); ++i) r0[f.id[i]] = toEigen(f.r[i]);
+  return r0;
+}
+
+void printWhereTheFluidMoved(const fluid::FluidParticles<3>& f, const std::vector<Eigen::Vector3d>& r0,
+                             const cases::TetheredBuoyTank& tank, const cases::TetheredBuoyScene& scene,
+                             const Eigen::Vector3d& centre) {
+  const char* names[5] = {"next to the sphere", "top layer", "side walls", "floor", "bulk"};
+  double dy[5] = {0}, work[5] = {0};
+  int n[5] = {0};
+  const double band = 2.5 * tank.dx;
+  for (std::size_t i = 0; i < f.size(); ++i) {
+    const Eigen::Vector3d q0 = r0[f.id[i]];
+    const double wall = std::min({q0[0], q0[2], tank.length - q0[0], tank.width - q0[2]});
+    const int g = (q0 - centre).norm() < tank.buoy.radius + band ? 0
+                  : q0[1] > scene.still_level - band            ? 1
+                  : wall < band                                  ? 2
+                  : q0[1] < band                                 ? 3
+                                                                 : 4;
+    const double d = f.r[i][1] - q0[1];
+    dy[g] += d;
+    work[g] += f.m[i] * tank.buoy.g * d;
+    ++n[g];
+  }
+  for (int g = 0; g < 5; ++g)
+    std::printf("# %s: %d particles, mean rise %+.3f mm, potential energy change %+.3f J\n", names[g], n[g],
+                n[g] ? 1e3 * dy[g] / n[g] : 0.0, work[g]);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  cases::TetheredBuoyTank tank;
+  tank.release = cases::BuoyRelease::Rest;
+  tank.dx = 2.0 * tank.buoy.radius / argOr(argc, argv, 1, 6.0);
+  tank.length = tank.width = std::round(0.6 / tank.dx) * tank.dx;  // symmetric about the buoy
+  tank.depth = 0.4;
+  tank.cfl = argOr(argc, argv, 2, tank.cfl);
+  tank.sound_speed_factor = argOr(argc, argv, 3, tank.sound_speed_factor);
+  tank.density_diffusion = argOr(argc, argv, 4, 1.0) != 0.0;
+  const double t0 = 0.3, end = t0 + argOr(argc, argv, 5, 4.0);
+  tank.release_time = argOr(argc, argv, 6, t0);
+  auto scene = cases::buildTetheredBuoy(tank);
+  auto& co = *scene.co;
+  const std::vector<Eigen::Vector3d> r0 = startPositions(co.fluid().fluid());
+  double work_sway = 0.0, work_turn = 0.0, next = 0.0, before = co.time();
+  std::printf("# t_s tilt_x_deg tilt_z_deg sway_x_mm sway_z_mm Fx_N Fz_N Fy_N Mx_Nm Mz_Nm work_sway_J work_turn_J "
+              "kinetic_J potential_J elastic_J\n");
+  while (co.time() < end) {
+    const auto k0 = co.bodies().kinematics(0);
+    co.step();
+    const double dt = co.time() - before;
+    before = co.time();
+    const auto w = co.coupling().appliedWrench(0);  // zero while the buoy is held
+    const auto k = co.bodies().kinematics(0);
+    Eigen::Vector3d horizontal = w.force;
+    horizontal[1] = 0.0;
+    work_sway += horizontal.dot(0.5 * (k.velocity + k0.velocity)) * dt;
+    work_turn += w.torque.dot(0.5 * (k.angularVelocity + k0.angularVelocity)) * dt;
+    if (co.time() < next) continue;
+    next += 0.02;
+    const Eigen::Vector3d axis = k.orientation * Eigen::Vector3d::UnitY();
+    const auto e = co.calcEnergy();
+    const double deg = 180.0 / std::acos(-1.0);
+    std::printf("%.3f %+.4f %+.4f %+.3f %+.3f %+.4f %+.4f %.3f %+.2e %+.2e %+.3e %+.3e %.4e %.5e %.4e\n", co.time() - t0,
+                std::asin(axis[2]) * deg, -std::asin(axis[0]) * deg, 1e3 * (k.position[0] - scene.rest[0]),
+                1e3 * (k.position[2] - scene.rest[2]), w.force[0], w.force[2], w.force[1], w.torque[0], w.torque[2],
+                work_sway, work_turn, e.fluid_kinetic, e.fluid_potential, e.fluid_elastic);
+  }
+  printWhereTheFluidMoved(co.fluid().fluid(), r0, tank, scene, co.bodies().kinematics(0).position);
+}
