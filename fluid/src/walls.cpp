@@ -89,19 +89,33 @@ template <int D>
 void Walls<D>::addRates(FluidContext<D>& ctx) {
   FluidParticles<D>& f = ctx.fluid;
   const NeighbourList& list = ctx.neighbours.fluidBoundary();
-  const Domain<D> domain = ctx.setup.domain;
-  const BoundaryParticles<D>& b = geometry_.particles;
   const std::size_t n = f.size();
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i) {
     Vec<D> acc = Vec<D>::Zero();
     for (std::uint64_t s = list.begin[i]; s < list.begin[i + 1]; ++s) {
       const std::uint32_t k = list.index[s];
-      acc += law_.acceleration(domain.minimumImage(f.r[i] - b.r[k]), b, k);
+      acc += push(ctx, i, k);
     }
     f.dvdt[i] += acc;
   }
   if (any_tracked_) addReactions(ctx);
+}
+
+template <int D>
+Vec<D> Walls<D>::push(const FluidContext<D>& ctx, std::size_t i, std::size_t k) const {
+  const BoundaryParticles<D>& b = geometry_.particles;
+  const Domain<D>& domain = ctx.setup.domain;
+  const Vec<D> r_ik = domain.minimumImage(ctx.fluid.r[i] - b.r[k]);
+  const Vec<D> a = law_.acceleration(r_ik, b, k);
+  // Corner particles already push only along the normals the fluid particle faces.
+  if (b.normal_begin[k + 1] - b.normal_begin[k] != 1 || a.isZero()) return a;
+  const NeighbourList& list = ctx.neighbours.fluidBoundary();
+  for (std::uint64_t s = list.begin[i]; s < list.begin[i + 1]; ++s) {
+    const std::uint32_t k2 = list.index[s];
+    if (law_.beyondEdge(r_ik, k, domain.minimumImage(ctx.fluid.r[i] - b.r[k2]), k2, b)) return Vec<D>::Zero();
+  }
+  return a;
 }
 
 // Reactions by a second gather over the tracked boundary particles: -m_i a_ik for
@@ -111,7 +125,6 @@ void Walls<D>::addReactions(FluidContext<D>& ctx) {
   const FluidParticles<D>& f = ctx.fluid;
   const NeighbourList& list = ctx.neighbours.boundaryFluid();
   const auto& tracked = ctx.neighbours.trackedBoundary();
-  const Domain<D> domain = ctx.setup.domain;
   BoundaryParticles<D>& b = geometry_.particles;
   const std::size_t n = tracked.size();
 #pragma omp parallel for schedule(static)
@@ -120,7 +133,7 @@ void Walls<D>::addReactions(FluidContext<D>& ctx) {
     Vec<D> force = Vec<D>::Zero();
     for (std::uint64_t s = list.begin[t]; s < list.begin[t + 1]; ++s) {
       const std::uint32_t i = list.index[s];
-      force -= f.m[i] * law_.acceleration(domain.minimumImage(f.r[i] - b.r[k]), b, k);
+      force -= f.m[i] * push(ctx, i, k);
     }
     b.reaction[k] = force;
   }

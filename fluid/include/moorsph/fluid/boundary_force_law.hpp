@@ -20,6 +20,23 @@
 // every particle of a 3D edge line instead throws particles near the line sideways
 // with unbounded force; that instability was observed in a 3D hydrostatic tank.)
 //
+// Beyond an edge: a fluid particle behind a single-normal particle k's plane is usually
+// outside the body, beyond a convex edge of it or on the far side of a part thinner than
+// the kernel (a blunt bow 1 dx wide, a plate), not through the wall; there k's held push
+// would throw it at the body (0.57 c_s in the heavy-ship stability case). beyondEdge
+// tells the two apart with a second particle k2 of the same surface within 2h: the fluid
+// particle is in front of k2 along a normal n2 of another face (n2 . n_k < cos 45 deg)
+// and the two faces meet convexly: with t the part of n2 in k's plane, k lies on the -t
+// side of k2 (faces back to back, t ~ 0: k2 lies behind k's plane). Through a flat or
+// convex wall a particle is behind every nearby particle's plane; through a concave
+// corner (a tank's side wall above its floor, or the floor beside the corner particle)
+// k lies on the +t side of k2: both keep their push. In front of k's plane the same
+// holds near a convex edge when the fluid particle is also past k2 along t (beyond the
+// edge line, where a face particle within dx of the edge pushes it at nearly the on-plane
+// strength along the wrong normal; the edge particles' own corner rule pushes it off the
+// edge instead). A smooth convex surface is not affected: there k2 lies past the fluid
+// particle along t.
+//
 // The boundary particle feels -F_ik: walls() sums these reactions for the wrench on a
 // body and for pressure sensors. The same function is evaluated on both sides, so
 // action and reaction are equal to the last bit.
@@ -88,7 +105,36 @@ class BoundaryForceLaw {
     return (scale_ * B * s / dist) * r_perp;
   }
 
+  /// Whether k's push on a fluid particle at r_ik (k has one normal) is cancelled by
+  /// particle k2 at r_ik2 = r_i - r_k2 (see "Beyond an edge" above).
+  bool beyondEdge(const Vec<D>& r_ik, std::size_t k, const Vec<D>& r_ik2, std::size_t k2,
+                  const BoundaryParticles<D>& b) const {
+    if (k2 == k || b.surface[k2] != b.surface[k]) return false;
+    if (r_ik2.squaredNorm() >= 4.0 / (inv_h_ * inv_h_)) return false;
+    const Vec<D>& n = b.normals[b.normal_begin[k]];
+    const bool behind = r_ik.dot(n) < 0.0;
+    const Vec<D> k_from_k2 = r_ik2 - r_ik;  // r_k - r_k2
+    for (std::uint32_t a = b.normal_begin[k2]; a < b.normal_begin[k2 + 1]; ++a) {
+      const Vec<D>& n2 = b.normals[a];
+      if (n2.dot(n) >= kOtherFace || r_ik2.dot(n2) <= 0.0) continue;  // same face, or not in front of k2
+      // t: the direction in k's plane in which the other face's normal leans. At a convex
+      // edge k's face lies on the -t side of k2, at a concave corner on the +t side.
+      const Vec<D> t = n2 - n2.dot(n) * n;
+      const double lean = t.norm();
+      if (lean < kOpposite) {
+        // Back to back: a thin part, if k2 is behind k's plane and the fluid behind both.
+        if (behind && k_from_k2.dot(n) > 0.0) return true;
+        continue;
+      }
+      // A convex edge; in front of k's plane the fluid must also be past k2 along t.
+      if (k_from_k2.dot(t) < 0.0 && (behind || r_ik2.dot(t) > 0.0)) return true;
+    }
+    return false;
+  }
+
  private:
+  static constexpr double kOtherFace = 0.7071;         // cos 45 deg: the mesh sampler merges faces within 30 deg
+  static constexpr double kOpposite = 0.1;             // |in-plane part| of n2 below which the faces are back to back
   // Behind the boundary particle's own plane (perp < 0) the push is held at its value
   // on the plane instead of rising to the singularity at perp = -b_off dx. A fluid
   // particle gets there only beside a body part thinner than b_off dx, where the far

@@ -67,6 +67,10 @@ class Walls final : public FluidEffect<D>, public Counted<Walls<D>> {
  private:
   void addReactions(FluidContext<D>& ctx);
   void findSurfaceRanges();
+  /// The push of boundary particle k on fluid particle i: the force law, cancelled when
+  /// i is beyond an edge of k's surface (BoundaryForceLaw::beyondEdge, checked against
+  /// i's boundary neighbours).
+  Vec<D> push(const FluidContext<D>& ctx, std::size_t i, std::size_t k) const;
 
   /// Body-frame copy of a movable surface.
   struct MovableSurface {
