@@ -12,7 +12,13 @@ Piston<D>::Piston(Walls<D>* walls, std::size_t surface, Signal displacement, Sig
 }
 
 template <int D>
-void Piston<D>::advanceTo(double t, StepStage /*stage*/) {
+void Piston<D>::advanceTo(double t, StepStage stage) {
+  if (stage == StepStage::Start) last_t_ = t;
+  if (stage == StepStage::Corrected) {
+    if (walls_->surfaces()[surface_].track_reaction)
+      work_ += (t - last_t_) * velocity_(t) * -walls_->calcSurfaceWrench(surface_, Vec<D>::Zero()).force[0];
+    last_t_ = t;
+  }
   x_ = displacement_(t);
   Vec<D> offset = origin_;
   offset[0] += x_;

@@ -215,7 +215,8 @@ BuiltScene<D> buildScene(const SceneConfig& c) {
     }
     fluid::BoxFaces<D> faces{};
     faces[1] = true;
-    fluid::SurfaceInfo info{p.name, false, true, Eigen::Vector3d(p.x, 0.0, 0.0)};
+    // Reaction-tracking so the plate's force (and the work it does on the water) can be read.
+    fluid::SurfaceInfo info{p.name, true, true, Eigen::Vector3d(p.x, 0.0, 0.0)};
     out.piston_surface = scene.boundary.addSurface(
         fluid::sampleBoxSurface<D>(lo, hi, spacing, faces, fluid::NormalSide::Outward), info);
     extents.push_back(nullptr);

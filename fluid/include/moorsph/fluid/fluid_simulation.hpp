@@ -89,6 +89,14 @@ class FluidSimulation {
   const Walls<D>* walls() const { return walls_; }
   Walls<D>* updWalls() { return walls_; }
 
+  /// The first effect of type E (built-in or added), or null.
+  template <class E>
+  const E* findEffect() const {
+    for (const auto& e : effects_)
+      if (const auto* found = dynamic_cast<const E*>(e.get())) return found;
+    return nullptr;
+  }
+
   /// Names of the effects that were built, in evaluation order (the pair terms first).
   std::vector<std::string> effectNames() const;
   /// Fluid-fluid pairs within 2h evaluated by the last rate evaluation.

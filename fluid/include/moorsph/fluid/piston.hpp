@@ -3,6 +3,9 @@
 // x by a prescribed displacement X(t) (any function, e.g. a CubicSpline of a time
 // series or a generated wave-maker signal). Before each rate evaluation the surface
 // is placed at its reference position + X(t) e_x, moving at X'(t) e_x. Needs `walls`.
+// When the surface tracks its reactions the effect also sums the work the plate does on
+// the water, W = sum over steps of dt X'(t) (-F_x), F the fluid's force on the plate at
+// the state the corrector used (first order in dt; the energy input of a wave flume).
 #include <functional>
 #include <moorsph/fluid/counted.hpp>
 #include <moorsph/fluid/walls.hpp>
@@ -21,6 +24,9 @@ class Piston final : public FluidEffect<D>, public Counted<Piston<D>> {
   void addRates(FluidContext<D>&) override {}
   void advanceTo(double t, StepStage stage) override;
   double displacement() const { return x_; }
+  /// Work done on the fluid since the start of this run [J] (2D: J/m); 0 when the
+  /// surface does not track reactions.
+  double work() const { return work_; }
 
  private:
   Walls<D>* walls_;
@@ -28,6 +34,7 @@ class Piston final : public FluidEffect<D>, public Counted<Piston<D>> {
   Signal displacement_, velocity_;
   Vec<D> origin_;
   double x_ = 0.0;
+  double work_ = 0.0, last_t_ = 0.0;
 };
 
 }  // namespace moorsph::fluid
