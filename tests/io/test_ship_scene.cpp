@@ -24,10 +24,11 @@
 #include <moorsph/io/checkpoint.hpp>
 #include <moorsph/io/csv_export.hpp>
 #include <moorsph/io/mesh_properties.hpp>
+#include <moorsph/io/mesh_sampling.hpp>
 #include <moorsph/io/scene_loader.hpp>
 #include "run/run_scene.hpp"
 #include "run/scene_bodies.hpp"
-#include "test_ship_equilibrium.hpp"
+#include "ship_scene_hull.hpp"
 
 using namespace moorsph;
 
@@ -38,33 +39,8 @@ std::string sourceDir() {
   return root ? root : "";
 }
 
-Eigen::Vector3d toEigen(const io::Triple& t) { return {t[0], t[1], t[2]}; }
-
-/// The moored hull of a ship scene: its body, its (identical) spring lines' k and L0, the
-/// still level (the highest water top), and the pose its `position` puts it at.
-test::MooredHull mooredHull(const io::SceneConfig& c) {
-  test::MooredHull h;
-  const io::BodyConfig& b = c.bodies.at(0);
-  h.mesh = b.shape.mesh;
-  h.mass = b.mass;
-  h.centre_of_mass = toEigen(b.centre_of_mass);
-  h.water_density = c.rho0;
-  h.gravity = -c.gravity[1];
-  for (const auto& w : c.water) h.still_level = std::max(h.still_level, w.box.upper[1]);
-  h.z = b.position[2];
-  for (const auto& m : c.moorings) {
-    h.fairlead = toEigen(m.fairlead.point);
-    h.anchors.push_back(toEigen(m.anchor.point));
-    h.stiffness = m.stiffness;
-    h.rest_length = m.rest_length;
-  }
-  return h;
-}
-
-test::HullPose scenePose(const io::SceneConfig& c) {
-  const io::BodyConfig& b = c.bodies.at(0);
-  return {b.position[0], b.position[1], b.orientation[1]};  // trim = pitch, about z
-}
+using test::mooredHull;
+using test::scenePose;
 
 }  // namespace
 
@@ -107,27 +83,6 @@ TEST(ShipScene, Section65Equilibrium) {
 }
 
 namespace {
-
-/// Whether p lies inside the closed mesh: parity of the crossings of the ray from p along +x
-/// (a slightly tilted direction keeps the ray off edges and vertices).
-bool insideMesh(const io::TriangleMesh& m, const Eigen::Vector3d& p) {
-  const Eigen::Vector3d d = Eigen::Vector3d(1.0, 1e-4, 2e-4).normalized();
-  int crossings = 0;
-  for (const auto& t : m.triangles) {
-    const Eigen::Vector3d a = m.vertices[t[0]], b = m.vertices[t[1]], c = m.vertices[t[2]];
-    const Eigen::Vector3d e1 = b - a, e2 = c - a, s = d.cross(e2);
-    const double det = e1.dot(s);
-    if (std::abs(det) < 1e-14) continue;
-    const Eigen::Vector3d o = p - a;
-    const double u = o.dot(s) / det;
-    if (u < 0.0 || u > 1.0) continue;
-    const Eigen::Vector3d q = o.cross(e1);
-    const double v = d.dot(q) / det;
-    if (v < 0.0 || u + v > 1.0) continue;
-    if (e2.dot(q) / det > 0.0) ++crossings;
-  }
-  return crossings % 2 == 1;
-}
 
 std::vector<double> column(const std::string& dir, const std::string& series) {
   std::ifstream in(dir + "/csv/" + series + ".csv");
@@ -217,7 +172,7 @@ TEST(ShipScene, TinyShipFloatsAtItsDraught) {
   const std::size_t count = cp.r.size() / 3;
   for (std::size_t i = 0; i < count; ++i) {
     const Eigen::Vector3d r(cp.r[3 * i], cp.r[3 * i + 1], cp.r[3 * i + 2]);
-    if (insideMesh(h.mesh, k.orientation.inverse() * (r - k.position))) ++inside;
+    if (io::meshContains(h.mesh, k.orientation.inverse() * (r - k.position))) ++inside;
   }
   EXPECT_EQ(inside, 0) << "fluid particles inside the hull";
 }

@@ -75,6 +75,9 @@ class StabilityMonitor {
       : sim_(sim), tank_(tank_size), lid_(lid) {}
 
   void addBody(const std::string& name, BodyDistance distance) { bodies_.push_back({name, std::move(distance)}); }
+  /// The tank's lower corner when it is not the origin (e.g. a piston that strokes back
+  /// behind x = 0: the plate itself is then checked as a body).
+  void setLowerCorner(const fluid::Vec<D>& lower) { lower_ = lower; }
 
   /// Call after every step with the current total energy and the work injected so far.
   void sample(double energy, double injected_work) {
@@ -91,7 +94,7 @@ class StabilityMonitor {
       if (!r.allFinite() || !f.v[i].allFinite() || !std::isfinite(f.rho[i])) ++non_finite_;
       bool outside = false;
       for (int k = 0; k < D; ++k)
-        if (r[k] < 0.0 || (r[k] > tank_[k] && (k != 1 || lid_))) outside = true;
+        if (r[k] < lower_[k] || (r[k] > tank_[k] && (k != 1 || lid_))) outside = true;
       through_wall_ += outside;
       for (const auto& b : bodies_) {
         const double d = b.distance(r);
@@ -138,6 +141,7 @@ class StabilityMonitor {
   };
   const fluid::FluidSimulation<D>& sim_;
   fluid::Vec<D> tank_;
+  fluid::Vec<D> lower_ = fluid::Vec<D>::Zero();
   bool lid_;
   std::vector<Body> bodies_;
   bool first_ = true;
