@@ -1,11 +1,13 @@
 #pragma once
 // The time series a scene's sensors add to series.h5: /gauges (one column per wave
 // gauge: free-surface height y [m]) and /probes (per pressure probe, the pressure
-// from the wall reactions and the SPH-interpolated one [Pa]).
+// from the wall reactions and the SPH-interpolated one [Pa]) and /piston (the plate's
+// displacement, velocity, the fluid's force on it and the work it has done on the water).
 #include <stdexcept>
 #include <string>
 #include <vector>
 #include <moorsph/cases/run_recorder.hpp>
+#include <moorsph/fluid/piston.hpp>
 #include <moorsph/io/scene_builder.hpp>
 #include "moving_mean.hpp"
 
@@ -14,7 +16,8 @@ namespace moorsph::app {
 template <int D>
 class SceneSeries {
  public:
-  SceneSeries(const fluid::FluidSimulation<D>& sim, const io::BuiltScene<D>& built) : names_(built.gauge_names) {
+  SceneSeries(const fluid::FluidSimulation<D>& sim, const io::BuiltScene<D>& built)
+      : names_(built.gauge_names), piston_(sim.template findEffect<fluid::Piston<D>>()), plate_(built.piston_surface) {
     for (const auto& g : built.gauges) gauges_.emplace_back(g);
     for (std::size_t k = 0; k < built.probes.size(); ++k) {
       try {
@@ -31,6 +34,19 @@ class SceneSeries {
   }
 
   void attach(cases::RunRecorder<D>& recorder) {
+    if (piston_) {
+      const char* per = D == 2 ? "/m" : "";
+      recorder.addSeries("piston",
+                         {{"displacement", "m"}, {"velocity", "m/s"}, {"force", std::string("N") + per},
+                          {"work", std::string("J") + per}},
+                         [this](const fluid::FluidSimulation<D>& s) {
+                           const double force = s.walls()->calcSurfaceWrench(plate_, fluid::Vec<D>::Zero()).force[0];
+                           return std::vector<double>{piston_->displacement(),
+                                                      s.walls()->surfaceMotion(plate_).velocity[0], force, piston_->work()};
+                         },
+                         "piston wave maker: displacement X and velocity of the plate, x-force of the fluid on it, "
+                         "work it has done on the water since the start of this run (a restart starts it at 0)");
+    }
     if (!gauges_.empty()) {
       std::vector<io::SeriesColumn> columns;
       for (const auto& n : names_) columns.push_back({n, "m"});
@@ -74,6 +90,8 @@ class SceneSeries {
 
  private:
   std::vector<std::string> names_;
+  const fluid::Piston<D>* piston_;
+  std::size_t plate_;
   std::vector<fluid::WaveGauge<D>> gauges_;
   std::vector<std::string> probe_names_;
   std::vector<fluid::PressureProbe<D>> probes_;

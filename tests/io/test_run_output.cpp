@@ -4,10 +4,16 @@
 // writes one CSV per series column with units in the header.
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <utility>
+#include <vector>
+#include <moorsph/fluid/waves/piston_signal.hpp>
+#include <moorsph/io/csv_export.hpp>
 #include "run/run_scene.hpp"
 #include "scene_text.hpp"
 
@@ -76,4 +82,54 @@ TEST(RunOutput, ExampleScenesRun) {
     EXPECT_EQ(app::runScene(o), app::kSuccess);
     EXPECT_TRUE(std::filesystem::exists(o.out + "/checkpoint.h5"));
   }
+}
+
+namespace {
+
+/// Column `name` of DIR/csv/GROUP.NAME.csv (time, value), as (t, v) pairs.
+std::vector<std::pair<double, double>> csvSeries(const std::string& dir, const std::string& series) {
+  std::ifstream in(dir + "/csv/" + series + ".csv");
+  std::string line;
+  std::getline(in, line);
+  std::vector<std::pair<double, double>> out;
+  while (std::getline(in, line)) {
+    const auto comma = line.find(',');
+    out.emplace_back(std::stod(line.substr(0, comma)), std::stod(line.substr(comma + 1)));
+  }
+  return out;
+}
+
+}  // namespace
+
+// /piston of a scene with a piston: the plate follows the regular signal (Biesel stroke,
+// half-cosine ramp, scene-reference.md), and its work is the integral of -F_x times its
+// velocity, the sum the piston keeps every step against the trapezoid of the recorded
+// outputs.
+TEST(RunOutput, PistonSeriesRecordsPlateMotionForceAndWork) {
+  const std::string source = std::getenv("MOORSPH_SOURCE_DIR") ? std::getenv("MOORSPH_SOURCE_DIR") : ".";
+  app::RunOptions o;
+  o.scene = source + "/cases/piston_flume_2d.yaml";
+  o.out = testing::TempDir() + "moorsph_piston_series";
+  o.end = 1.2;
+  o.threads = 1;
+  o.sets = {"output.interval=0.005", "output.particles_interval=0"};
+  std::filesystem::remove_all(o.out);
+  ASSERT_EQ(app::runScene(o), app::kSuccess);
+  ASSERT_GT(io::exportSeriesCsv(o.out).size(), 0u);
+  const auto x = csvSeries(o.out, "piston.displacement"), v = csvSeries(o.out, "piston.velocity");
+  const auto force = csvSeries(o.out, "piston.force"), work = csvSeries(o.out, "piston.work");
+  ASSERT_GT(x.size(), 200u);
+  const double S = fluid::waves::pistonStroke(0.03, 1.2, 0.3), w = 2.0 * M_PI / 1.2, ramp = 2.4;
+  double trapezoid = 0.0;
+  for (std::size_t k = 0; k < x.size(); ++k) {
+    const double t = x[k].first, r = 0.5 * (1.0 - std::cos(M_PI * t / ramp));
+    EXPECT_NEAR(x[k].second, r * 0.5 * S * std::sin(w * t), 1e-9) << "t = " << t;
+    if (k > 0)
+      trapezoid -= 0.5 * (force[k].first - force[k - 1].first) *
+                   (force[k].second * v[k].second + force[k - 1].second * v[k - 1].second);
+  }
+  std::printf("piston: stroke %.4f m, work %.4f J/m at %.2f s (trapezoid of the outputs %.4f J/m)\n", S,
+              work.back().second, work.back().first, trapezoid);
+  EXPECT_GT(work.back().second, 0.0);
+  EXPECT_NEAR(work.back().second, trapezoid, 0.05 * std::abs(trapezoid));
 }
