@@ -1,6 +1,7 @@
 #include <moorsph/io/scene_builder.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
@@ -98,6 +99,34 @@ fluid::BoxFaces<D> boxFaces(const BoxObstacleConfig& b) {
   return faces;
 }
 
+// On a periodic axis a face sampled over the whole period has a row at each end, and the
+// upper row is the periodic image of the lower one: two particles in one place. Drop the
+// upper row, so the rows continue evenly across the seam at any spacing and a scene can
+// give such a face the full period ([0, L]) whatever its dx.
+template <int D>
+fluid::BoundaryParticles<D> withoutPeriodicImages(const fluid::BoundaryParticles<D>& p, const fluid::Domain<D>& domain,
+                                                 double spacing) {
+  std::array<bool, D> spans{};
+  for (int a = 0; a < D; ++a) {
+    if (!domain.periodic[a]) continue;
+    bool at_lower = false, at_upper = false;
+    for (const auto& r : p.r) {
+      at_lower = at_lower || r[a] < domain.lower[a] + 0.25 * spacing;
+      at_upper = at_upper || r[a] > domain.upper[a] - 0.25 * spacing;
+    }
+    spans[a] = at_lower && at_upper;
+  }
+  fluid::BoundaryParticles<D> out;
+  for (std::size_t k = 0; k < p.size(); ++k) {
+    bool image = false;
+    for (int a = 0; a < D; ++a) image = image || (spans[a] && p.r[k][a] > domain.upper[a] - 0.25 * spacing);
+    if (image) continue;
+    out.add(p.r[k], std::vector<fluid::Vec<D>>(p.normals.begin() + p.normal_begin[k], p.normals.begin() + p.normal_begin[k + 1]),
+            p.surface[k]);
+  }
+  return out;
+}
+
 }  // namespace
 
 template <int D>
@@ -169,14 +198,16 @@ BuiltScene<D> buildScene(const SceneConfig& c) {
   MeshExclusion near_mesh;
   for (const auto& t : c.tanks) {
     const fluid::BoxFaces<D> faces = t.lid ? fluid::allFaces<D>() : fluid::openTopTank<D>();
-    scene.boundary.addSurface(fluid::sampleBoxSurface<D>(toVec<D>(t.box.lower), toVec<D>(t.box.upper), spacing, faces,
-                                                         fluid::NormalSide::Inward),
+    scene.boundary.addSurface(withoutPeriodicImages<D>(fluid::sampleBoxSurface<D>(toVec<D>(t.box.lower), toVec<D>(t.box.upper),
+                                                                                  spacing, faces, fluid::NormalSide::Inward),
+                                                       scene.setup.domain, spacing),
                               fluid::SurfaceInfo{t.name, t.track_reaction});
     extents.push_back(&t.box);
   }
   for (const auto& b : c.boxes) {
-    scene.boundary.addSurface(fluid::sampleBoxSurface<D>(toVec<D>(b.box.lower), toVec<D>(b.box.upper), spacing,
-                                                         boxFaces<D>(b), fluid::NormalSide::Outward),
+    scene.boundary.addSurface(withoutPeriodicImages<D>(fluid::sampleBoxSurface<D>(toVec<D>(b.box.lower), toVec<D>(b.box.upper),
+                                                                                  spacing, boxFaces<D>(b), fluid::NormalSide::Outward),
+                                                       scene.setup.domain, spacing),
                               fluid::SurfaceInfo{b.name, b.track_reaction});
     extents.push_back(&b.box);
   }
@@ -218,7 +249,9 @@ BuiltScene<D> buildScene(const SceneConfig& c) {
     // Reaction-tracking so the plate's force (and the work it does on the water) can be read.
     fluid::SurfaceInfo info{p.name, true, true, Eigen::Vector3d(p.x, 0.0, 0.0)};
     out.piston_surface = scene.boundary.addSurface(
-        fluid::sampleBoxSurface<D>(lo, hi, spacing, faces, fluid::NormalSide::Outward), info);
+        withoutPeriodicImages<D>(fluid::sampleBoxSurface<D>(lo, hi, spacing, faces, fluid::NormalSide::Outward),
+                                 scene.setup.domain, spacing),
+        info);
     extents.push_back(nullptr);
   }
 

@@ -384,3 +384,35 @@ TEST(SceneLoader, BuoyInWavesScenesMatchMethod62c) {
     EXPECT_GT(built.scene.fluid.size(), 0u);
   }
 }
+
+// A floor spanning the whole z period (0-0.72 m) keeps evenly spaced rows across the seam
+// at any spacing: the row at 0.72 m, the periodic image of the row at 0, is dropped (the
+// ship scenes rely on it to run at any dx).
+TEST(SceneLoader, FaceSpanningThePeriodHasNoDoubleRowAtTheSeam) {
+  const char* text = R"(dim: 3
+name: periodic_floor
+end_time: 0.1
+resolution: {dx: 0.04}
+effects: [pressure, gravity, walls]
+domain: {lower: [0, -0.2, 0], upper: [0.8, 0.6, 0.72], periodic: [false, false, true]}
+geometry:
+  - box: {name: floor, lower: [0, -0.2, 0], upper: [0.8, 0, 0.72], open_faces: [-x, +x, -y, -z, +z]}
+  - water: {lower: [0, 0, 0], upper: [0.8, 0.2, 0.72]}
+)";
+  for (double dx : {0.04, 0.03, 0.02}) {
+    const auto built = io::buildScene<3>(io::loadSceneText(text, "s.yaml", {"resolution.dx=" + std::to_string(dx)}));
+    const auto& r = built.scene.boundary.particles.r;
+    const double step = 0.72 / std::ceil(0.72 / dx - 1e-9);
+    // Nearest neighbour across the seam (minimum image in z) is one step away, not zero.
+    double nearest = 1e9;
+    for (std::size_t a = 0; a < r.size(); ++a)
+      for (std::size_t b = a + 1; b < r.size(); ++b) {
+        fluid::Vec<3> d = r[a] - r[b];
+        d[2] -= 0.72 * std::round(d[2] / 0.72);
+        nearest = std::min(nearest, d.norm());
+      }
+    EXPECT_NEAR(nearest, std::min(step, 0.8 / std::ceil(0.8 / dx - 1e-9)), 1e-9) << "dx " << dx;
+    const long columns = std::lround(0.8 / (0.8 / std::ceil(0.8 / dx - 1e-9))) + 1;
+    EXPECT_EQ(static_cast<long>(r.size()), columns * std::lround(0.72 / step)) << "dx " << dx;
+  }
+}
