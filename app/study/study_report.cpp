@@ -25,12 +25,12 @@ std::string csvNum(double x) { return std::isnan(x) ? "" : num(x, "%.10g"); }
 // Two log-log panels: relative error against wall time and against fluid particles,
 // one line per variant, each point labelled with its dx.
 const char* const kStudyPlotScript = R"PY(
-import csv, sys
+import csv, math, sys
 try:
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
-    from matplotlib.ticker import FormatStrFormatter, NullFormatter
+    from matplotlib.ticker import FormatStrFormatter, FuncFormatter, NullFormatter
 except ImportError as error:
     print(f"study plot needs matplotlib in {sys.executable}: {error}")
     sys.exit(77)
@@ -59,10 +59,15 @@ axes[1].set_xlabel("fluid particles")
 for ax in axes:
     ax.set_ylabel("relative error [%]")
     ax.grid(True, which="both", alpha=0.3)
-    # Plain numbers; minor ticks labelled only when the axis spans less than a decade.
-    for axis, (lo, hi) in ((ax.xaxis, ax.get_xlim()), (ax.yaxis, ax.get_ylim())):
+    # Plain numbers; minor ticks labelled only when the axis spans less than a decade, on
+    # the x axes only at 2 and 5 times a power of ten (all eight overlap on long numbers).
+    def two_and_five(value, _):
+        mantissa = round(value / 10 ** math.floor(math.log10(value))) if value > 0 else 0
+        return f"{value:g}" if mantissa in (2, 5) else ""
+    for axis, (lo, hi), minor in ((ax.xaxis, ax.get_xlim(), FuncFormatter(two_and_five)),
+                                  (ax.yaxis, ax.get_ylim(), FormatStrFormatter("%g"))):
         axis.set_major_formatter(FormatStrFormatter("%g"))
-        axis.set_minor_formatter(FormatStrFormatter("%g") if hi < 10 * lo else NullFormatter())
+        axis.set_minor_formatter(minor if hi < 10 * lo else NullFormatter())
 if len(variants) > 1:
     axes[0].legend(fontsize=7)
 fig.suptitle(title, fontsize=9)
