@@ -21,7 +21,7 @@ enum class DensityDiffusionForm {
 /// Particle shifting (the "particle_shifting" effect, particle_shifting.hpp).
 struct ShiftingParameters {
   double coefficient = 2.0;        ///< A in (1): Skillen et al. 2013
-  double anti_clustering = 0.2;    ///< R in (1): Lind et al. 2012
+  double anti_clustering = 0.0;    ///< R in (1): Lind et al. 2012
   int anti_clustering_power = 4;   ///< n in (1)
   double cap = 0.5;                ///< |du_shift| <= cap |v|
   double surface_divergence = -1;  ///< < 0: D - 0.4 (1.6 in 2D, 2.6 in 3D)
