@@ -180,6 +180,11 @@ TEST(Checkpoint, RestartRejectsAnotherGeometry) {
   moved.restart = dir + "/first/checkpoint.h5";
   moved.sets = {"geometry[0].tank.upper=[0.5, 0.3]"};
   EXPECT_EQ(app::runScene(moved), app::kBadInput);
+  // Written differently, same particles (the side walls' top row moves by 1e-11 m): accepted.
+  app::RunOptions rewritten = options(scene, dir + "/rewritten", 0.04);
+  rewritten.restart = dir + "/first/checkpoint.h5";
+  rewritten.sets = {"geometry[0].tank.upper=[0.4, 0.30000000001]"};
+  EXPECT_EQ(app::runScene(rewritten), app::kSuccess);
   // Restarting into the checkpoint's own directory would overwrite its series.
   app::RunOptions same = options(scene, dir + "/first", 0.04);
   same.restart = dir + "/first/checkpoint.h5";
