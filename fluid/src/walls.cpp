@@ -1,6 +1,10 @@
 #include <moorsph/fluid/walls.hpp>
 
 #include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <map>
 #include <stdexcept>
 #include <string>
 
@@ -19,6 +23,7 @@ Walls<D>::Walls(BoundaryGeometry<D> geometry, const FluidSetup<D>& setup)
     any_tracked_ = any_tracked_ || tracked_[k];
   }
   findSurfaceRanges();
+  findFeatureParticles(4.0 * setup.h());
   const BoundaryParticles<D>& b = geometry_.particles;
   for (std::size_t s = 0; s < geometry_.surfaces.size(); ++s) {
     if (!geometry_.surfaces[s].movable) continue;
@@ -49,6 +54,44 @@ void Walls<D>::findSurfaceRanges() {
     while (end < surface.size() && surface[end] == s) ++end;
     ranges_[s] = {k, end};
     k = end;
+  }
+}
+
+// A particle needs the beyond-edge test only if a particle of its surface within `reach`
+// (4h: both within 2h of one fluid particle) meets its face convexly or back to back; a
+// tank (concave everywhere) and flat stretches need none. Hash grid of cells `reach` wide.
+// Across a periodic seam nothing is found: such a particle keeps the plain law.
+template <int D>
+void Walls<D>::findFeatureParticles(double reach) {
+  const BoundaryParticles<D>& b = geometry_.particles;
+  near_feature_.assign(b.size(), 0);
+  auto cellOf = [reach](const Vec<D>& r) {
+    std::array<std::int64_t, 3> c{0, 0, 0};
+    for (int d = 0; d < D; ++d) c[d] = static_cast<std::int64_t>(std::floor(r[d] / reach));
+    return c;
+  };
+  std::map<std::array<std::int64_t, 3>, std::vector<std::uint32_t>> cells;
+  for (std::size_t k = 0; k < b.size(); ++k) cells[cellOf(b.r[k])].push_back(static_cast<std::uint32_t>(k));
+  const int span = D == 3 ? 1 : 0;
+  for (std::size_t k = 0; k < b.size(); ++k) {
+    if (b.normalCount(k) != 1) continue;
+    const Vec<D>& n = b.normals[b.normal_begin[k]];
+    const auto c = cellOf(b.r[k]);
+    bool found = false;
+    for (int dx = -1; dx <= 1 && !found; ++dx)
+      for (int dy = -1; dy <= 1 && !found; ++dy)
+        for (int dz = -span; dz <= span && !found; ++dz) {
+          const auto it = cells.find({c[0] + dx, c[1] + dy, c[2] + dz});
+          if (it == cells.end()) continue;
+          for (const std::uint32_t k2 : it->second) {
+            if (b.surface[k2] != b.surface[k] || (b.r[k2] - b.r[k]).norm() > reach) continue;
+            for (std::uint32_t a = b.normal_begin[k2]; a < b.normal_begin[k2 + 1]; ++a) {
+              const auto m = BoundaryForceLaw<D>::meeting(n, b.normals[a], b.r[k] - b.r[k2]);
+              found = found || m == BoundaryForceLaw<D>::Meeting::Convex || m == BoundaryForceLaw<D>::Meeting::Thin;
+            }
+          }
+        }
+    near_feature_[k] = found;
   }
 }
 
@@ -86,36 +129,33 @@ double Walls<D>::maxMovingSpeed() const {
 }
 
 template <int D>
+bool Walls<D>::beyondAnEdge(const FluidContext<D>& ctx, const Domain<D>& domain, std::size_t i, std::size_t k,
+                            const Vec<D>& r_ik) const {
+  const BoundaryParticles<D>& b = geometry_.particles;
+  const NeighbourList& list = ctx.neighbours.fluidBoundary();
+  for (std::uint64_t s = list.begin[i]; s < list.begin[i + 1]; ++s) {
+    const std::uint32_t k2 = list.index[s];
+    if (law_.beyondEdge(r_ik, k, domain.minimumImage(ctx.fluid.r[i] - b.r[k2]), k2, b)) return true;
+  }
+  return false;
+}
+
+template <int D>
 void Walls<D>::addRates(FluidContext<D>& ctx) {
   FluidParticles<D>& f = ctx.fluid;
   const NeighbourList& list = ctx.neighbours.fluidBoundary();
+  const Domain<D> domain = ctx.setup.domain;
   const std::size_t n = f.size();
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i) {
     Vec<D> acc = Vec<D>::Zero();
     for (std::uint64_t s = list.begin[i]; s < list.begin[i + 1]; ++s) {
       const std::uint32_t k = list.index[s];
-      acc += push(ctx, i, k);
+      acc += push(ctx, domain, i, k);
     }
     f.dvdt[i] += acc;
   }
   if (any_tracked_) addReactions(ctx);
-}
-
-template <int D>
-Vec<D> Walls<D>::push(const FluidContext<D>& ctx, std::size_t i, std::size_t k) const {
-  const BoundaryParticles<D>& b = geometry_.particles;
-  const Domain<D>& domain = ctx.setup.domain;
-  const Vec<D> r_ik = domain.minimumImage(ctx.fluid.r[i] - b.r[k]);
-  const Vec<D> a = law_.acceleration(r_ik, b, k);
-  // Corner particles already push only along the normals the fluid particle faces.
-  if (b.normal_begin[k + 1] - b.normal_begin[k] != 1 || a.isZero()) return a;
-  const NeighbourList& list = ctx.neighbours.fluidBoundary();
-  for (std::uint64_t s = list.begin[i]; s < list.begin[i + 1]; ++s) {
-    const std::uint32_t k2 = list.index[s];
-    if (law_.beyondEdge(r_ik, k, domain.minimumImage(ctx.fluid.r[i] - b.r[k2]), k2, b)) return Vec<D>::Zero();
-  }
-  return a;
 }
 
 // Reactions by a second gather over the tracked boundary particles: -m_i a_ik for
@@ -125,6 +165,7 @@ void Walls<D>::addReactions(FluidContext<D>& ctx) {
   const FluidParticles<D>& f = ctx.fluid;
   const NeighbourList& list = ctx.neighbours.boundaryFluid();
   const auto& tracked = ctx.neighbours.trackedBoundary();
+  const Domain<D> domain = ctx.setup.domain;
   BoundaryParticles<D>& b = geometry_.particles;
   const std::size_t n = tracked.size();
 #pragma omp parallel for schedule(static)
@@ -133,7 +174,7 @@ void Walls<D>::addReactions(FluidContext<D>& ctx) {
     Vec<D> force = Vec<D>::Zero();
     for (std::uint64_t s = list.begin[t]; s < list.begin[t + 1]; ++s) {
       const std::uint32_t i = list.index[s];
-      force -= f.m[i] * push(ctx, i, k);
+      force -= f.m[i] * push(ctx, domain, i, k);
     }
     b.reaction[k] = force;
   }

@@ -105,6 +105,19 @@ class BoundaryForceLaw {
     return (scale_ * B * s / dist) * r_perp;
   }
 
+  /// How the face of a single-normal particle (normal n) meets a face of another
+  /// particle of its surface (normal n2, the other particle at r_k - k_from_k2):
+  /// SameFace (normals within 45 deg), Concave, Convex (k lies on the -t side of k2, t
+  /// the part of n2 in k's plane) or Thin (back to back, k2 behind k's plane). Depends
+  /// on the surface only, so Walls flags the particles near a Convex or Thin meeting once.
+  enum class Meeting { SameFace, Concave, Convex, Thin };
+  static Meeting meeting(const Vec<D>& n, const Vec<D>& n2, const Vec<D>& k_from_k2) {
+    if (n2.dot(n) >= kOtherFace) return Meeting::SameFace;
+    const Vec<D> t = n2 - n2.dot(n) * n;
+    if (t.norm() < kOpposite) return k_from_k2.dot(n) > 0.0 ? Meeting::Thin : Meeting::Concave;
+    return k_from_k2.dot(t) < 0.0 ? Meeting::Convex : Meeting::Concave;
+  }
+
   /// Whether k's push on a fluid particle at r_ik (k has one normal) is cancelled by
   /// particle k2 at r_ik2 = r_i - r_k2 (see "Beyond an edge" above).
   bool beyondEdge(const Vec<D>& r_ik, std::size_t k, const Vec<D>& r_ik2, std::size_t k2,
@@ -113,28 +126,26 @@ class BoundaryForceLaw {
     if (r_ik2.squaredNorm() >= 4.0 / (inv_h_ * inv_h_)) return false;
     const Vec<D>& n = b.normals[b.normal_begin[k]];
     const bool behind = r_ik.dot(n) < 0.0;
-    const Vec<D> k_from_k2 = r_ik2 - r_ik;  // r_k - r_k2
     for (std::uint32_t a = b.normal_begin[k2]; a < b.normal_begin[k2 + 1]; ++a) {
       const Vec<D>& n2 = b.normals[a];
-      if (n2.dot(n) >= kOtherFace || r_ik2.dot(n2) <= 0.0) continue;  // same face, or not in front of k2
-      // t: the direction in k's plane in which the other face's normal leans. At a convex
-      // edge k's face lies on the -t side of k2, at a concave corner on the +t side.
-      const Vec<D> t = n2 - n2.dot(n) * n;
-      const double lean = t.norm();
-      if (lean < kOpposite) {
-        // Back to back: a thin part, if k2 is behind k's plane and the fluid behind both.
-        if (behind && k_from_k2.dot(n) > 0.0) return true;
-        continue;
+      if (r_ik2.dot(n2) <= 0.0) continue;  // not in front of k2's face
+      switch (meeting(n, n2, r_ik2 - r_ik)) {
+        case Meeting::Thin:  // the fluid behind both faces of a thin part
+          if (behind) return true;
+          break;
+        case Meeting::Convex:  // in front of k's plane the fluid must also be past k2 along t
+          if (behind || r_ik2.dot(n2 - n2.dot(n) * n) > 0.0) return true;
+          break;
+        default:
+          break;
       }
-      // A convex edge; in front of k's plane the fluid must also be past k2 along t.
-      if (k_from_k2.dot(t) < 0.0 && (behind || r_ik2.dot(t) > 0.0)) return true;
     }
     return false;
   }
 
  private:
-  static constexpr double kOtherFace = 0.7071;         // cos 45 deg: the mesh sampler merges faces within 30 deg
-  static constexpr double kOpposite = 0.1;             // |in-plane part| of n2 below which the faces are back to back
+  static constexpr double kOtherFace = 0.7071;  // cos 45 deg: the mesh sampler merges faces within 30 deg
+  static constexpr double kOpposite = 0.1;      // |in-plane part| of n2 below which the faces are back to back
   // Behind the boundary particle's own plane (perp < 0) the push is held at its value
   // on the plane instead of rising to the singularity at perp = -b_off dx. A fluid
   // particle gets there only beside a body part thinner than b_off dx, where the far

@@ -68,9 +68,19 @@ class Walls final : public FluidEffect<D>, public Counted<Walls<D>> {
   void addReactions(FluidContext<D>& ctx);
   void findSurfaceRanges();
   /// The push of boundary particle k on fluid particle i: the force law, cancelled when
-  /// i is beyond an edge of k's surface (BoundaryForceLaw::beyondEdge, checked against
-  /// i's boundary neighbours).
-  Vec<D> push(const FluidContext<D>& ctx, std::size_t i, std::size_t k) const;
+  /// i is beyond an edge of k's surface. Inline: it is the walls' inner loop.
+  Vec<D> push(const FluidContext<D>& ctx, const Domain<D>& domain, std::size_t i, std::size_t k) const {
+    const BoundaryParticles<D>& b = geometry_.particles;
+    const Vec<D> r_ik = domain.minimumImage(ctx.fluid.r[i] - b.r[k]);
+    const Vec<D> a = law_.acceleration(r_ik, b, k);
+    // Only near a convex edge or a thin part can i be beyond an edge of k's surface.
+    if (near_feature_[k] && !a.isZero() && beyondAnEdge(ctx, domain, i, k, r_ik)) return Vec<D>::Zero();
+    return a;
+  }
+  /// BoundaryForceLaw::beyondEdge against each of i's boundary neighbours.
+  bool beyondAnEdge(const FluidContext<D>& ctx, const Domain<D>& domain, std::size_t i, std::size_t k,
+                    const Vec<D>& r_ik) const;
+  void findFeatureParticles(double reach);
 
   /// Body-frame copy of a movable surface.
   struct MovableSurface {
@@ -87,6 +97,10 @@ class Walls final : public FluidEffect<D>, public Counted<Walls<D>> {
   BoundaryForceLaw<D> law_;
   std::vector<char> tracked_;
   bool any_tracked_ = false;
+  /// Per boundary particle: one normal, and a particle of its own surface within 4h
+  /// meets its face convexly or back to back (BoundaryForceLaw::meeting), so the
+  /// beyond-edge test can apply. Rigid motion keeps it; tanks and flat stretches skip it.
+  std::vector<char> near_feature_;
 };
 
 }  // namespace moorsph::fluid
