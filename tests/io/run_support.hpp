@@ -7,7 +7,9 @@
 
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <string>
+#include <vector>
 
 namespace moorsph::test_support {
 
@@ -17,6 +19,24 @@ inline std::string freshDir(const std::string& name) {
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   return dir;
+}
+
+/// A series exported by `moorsph export --csv` (DIR/csv/GROUP.NAME.csv: header, then
+/// time,value rows): the times and the values.
+struct ExportedSeries {
+  std::vector<double> time, value;
+};
+inline ExportedSeries exportedSeries(const std::string& dir, const std::string& series) {
+  std::ifstream in(dir + "/csv/" + series + ".csv");
+  std::string line;
+  std::getline(in, line);
+  ExportedSeries out;
+  while (std::getline(in, line)) {
+    const auto comma = line.find(',');
+    out.time.push_back(std::stod(line.substr(0, comma)));
+    out.value.push_back(std::stod(line.substr(comma + 1)));
+  }
+  return out;
 }
 
 struct CliResult {

@@ -10,11 +10,11 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
-#include <utility>
 #include <vector>
 #include <moorsph/fluid/waves/piston_signal.hpp>
 #include <moorsph/io/csv_export.hpp>
 #include "run/run_scene.hpp"
+#include "run_support.hpp"
 #include "scene_text.hpp"
 
 using namespace moorsph;
@@ -84,22 +84,6 @@ TEST(RunOutput, ExampleScenesRun) {
   }
 }
 
-namespace {
-
-/// Column `name` of DIR/csv/GROUP.NAME.csv (time, value), as (t, v) pairs.
-std::vector<std::pair<double, double>> csvSeries(const std::string& dir, const std::string& series) {
-  std::ifstream in(dir + "/csv/" + series + ".csv");
-  std::string line;
-  std::getline(in, line);
-  std::vector<std::pair<double, double>> out;
-  while (std::getline(in, line)) {
-    const auto comma = line.find(',');
-    out.emplace_back(std::stod(line.substr(0, comma)), std::stod(line.substr(comma + 1)));
-  }
-  return out;
-}
-
-}  // namespace
 
 // /piston of a scene with a piston: the plate follows the regular signal (Biesel stroke,
 // half-cosine ramp, scene-reference.md), and its work is the integral of -F_x times its
@@ -116,20 +100,20 @@ TEST(RunOutput, PistonSeriesRecordsPlateMotionForceAndWork) {
   std::filesystem::remove_all(o.out);
   ASSERT_EQ(app::runScene(o), app::kSuccess);
   ASSERT_GT(io::exportSeriesCsv(o.out).size(), 0u);
-  const auto x = csvSeries(o.out, "piston.displacement"), v = csvSeries(o.out, "piston.velocity");
-  const auto force = csvSeries(o.out, "piston.force"), work = csvSeries(o.out, "piston.work");
-  ASSERT_GT(x.size(), 200u);
+  using test_support::exportedSeries;
+  const auto x = exportedSeries(o.out, "piston.displacement"), v = exportedSeries(o.out, "piston.velocity");
+  const auto force = exportedSeries(o.out, "piston.force"), work = exportedSeries(o.out, "piston.work");
+  ASSERT_GT(x.time.size(), 200u);
   const double S = fluid::waves::pistonStroke(0.03, 1.2, 0.3), w = 2.0 * M_PI / 1.2, ramp = 2.4;
   double trapezoid = 0.0;
-  for (std::size_t k = 0; k < x.size(); ++k) {
-    const double t = x[k].first, r = 0.5 * (1.0 - std::cos(M_PI * t / ramp));
-    EXPECT_NEAR(x[k].second, r * 0.5 * S * std::sin(w * t), 1e-9) << "t = " << t;
+  for (std::size_t k = 0; k < x.time.size(); ++k) {
+    const double t = x.time[k], r = 0.5 * (1.0 - std::cos(M_PI * t / ramp));
+    EXPECT_NEAR(x.value[k], r * 0.5 * S * std::sin(w * t), 1e-9) << "t = " << t;
     if (k > 0)
-      trapezoid -= 0.5 * (force[k].first - force[k - 1].first) *
-                   (force[k].second * v[k].second + force[k - 1].second * v[k - 1].second);
+      trapezoid -= 0.5 * (t - x.time[k - 1]) * (force.value[k] * v.value[k] + force.value[k - 1] * v.value[k - 1]);
   }
   std::printf("piston: stroke %.4f m, work %.4f J/m at %.2f s (trapezoid of the outputs %.4f J/m)\n", S,
-              work.back().second, work.back().first, trapezoid);
-  EXPECT_GT(work.back().second, 0.0);
-  EXPECT_NEAR(work.back().second, trapezoid, 0.05 * std::abs(trapezoid));
+              work.value.back(), work.time.back(), trapezoid);
+  EXPECT_GT(work.value.back(), 0.0);
+  EXPECT_NEAR(work.value.back(), trapezoid, 0.05 * std::abs(trapezoid));
 }

@@ -28,6 +28,7 @@
 #include <moorsph/io/scene_loader.hpp>
 #include "run/run_scene.hpp"
 #include "run/scene_bodies.hpp"
+#include "run_support.hpp"
 #include "ship_scene_hull.hpp"
 
 using namespace moorsph;
@@ -85,12 +86,7 @@ TEST(ShipScene, Section65Equilibrium) {
 namespace {
 
 std::vector<double> column(const std::string& dir, const std::string& series) {
-  std::ifstream in(dir + "/csv/" + series + ".csv");
-  std::string line;
-  std::getline(in, line);
-  std::vector<double> out;
-  while (std::getline(in, line)) out.push_back(std::stod(line.substr(line.find(',') + 1)));
-  return out;
+  return test_support::exportedSeries(dir, series).value;
 }
 
 }  // namespace
@@ -113,14 +109,7 @@ TEST(ShipScene, TinyShipFloatsAtItsDraught) {
   const test::MooredHull h = mooredHull(c);
   const test::HullPose eq = test::solveHullEquilibrium(h, scenePose(c));
   const test::HullBalance balance = test::hullBalance(h, eq);
-  const auto time = [&] {
-    std::ifstream in(dir + "/csv/body_ship.x.csv");
-    std::string line;
-    std::getline(in, line);
-    std::vector<double> v;
-    while (std::getline(in, line)) v.push_back(std::stod(line.substr(0, line.find(','))));
-    return v;
-  }();
+  const auto time = test_support::exportedSeries(dir, "body_ship.x").time;
   const auto x = column(dir, "body_ship.x"), y = column(dir, "body_ship.y"), trim = column(dir, "body_ship.pitch");
   const char* const lines[3] = {"line_fore.fairlead_tension", "line_aft_port.fairlead_tension",
                                 "line_aft_starboard.fairlead_tension"};

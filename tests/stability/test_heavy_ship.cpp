@@ -75,8 +75,7 @@ TEST(StabilityHeavyShip, HeavierShipSinksIntoSteepWavesWithoutBlowUp) {
   const double start_y = start.toGround(lcf, hull.z).y(), heavy_y = heavy.toGround(lcf, hull.z).y();
   const double step = start_y - heavy_y, wave_amplitude = 0.5 * config.piston.wave_height;
   const double lowest_allowed = heavy_y - step - wave_amplitude - 0.88;
-  Eigen::Vector3d box_lo = hull.mesh.vertices.front(), box_hi = box_lo;
-  for (const auto& v : hull.mesh.vertices) box_lo = box_lo.cwiseMin(v), box_hi = box_hi.cwiseMax(v);
+  const Eigen::Vector3d box_lo = hull.mesh.lower(), box_hi = hull.mesh.upper();
 
   const double tank_length = 340.0, width = config.domain.upper[2];
   stability::StabilityMonitor<3> monitor(sim, fluid::Vec<3>(tank_length, 0.0, width), false);
