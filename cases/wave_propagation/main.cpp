@@ -3,7 +3,7 @@
 //
 //   moorsph_wave_tank periodic|flume [key=value ...] --out FILE.csv
 //
-// Keys (SI units): dx, mu, cfl, h_factor, no_viscosity (1: drop the term), sound_speed, xsph_form (reference|monaghan), xsph_eps,
+// Keys (SI units): dx, mu, cfl, h_factor, b_off, boundary_strength, dd_delta, dd_form, no_viscosity (1: drop the term), sound_speed, xsph_form (reference|monaghan), xsph_eps,
 // density_diffusion (0|1), shifting (0|1: particle_shifting), shifting_coefficient,
 // shifting_cap, shifting_r, predictor_fraction, period, depth, amplitude (periodic) or
 // height (flume), wavelengths, theory, kappa, maker_start, maker_length, bottom_gap,
@@ -75,6 +75,13 @@ cases::WaveTankFluid fluidOf(Args& a) {
   f.method.predictor_fraction = a.get("predictor_fraction", f.method.predictor_fraction);
   f.method.cfl = a.get("cfl", f.method.cfl);
   f.method.h_factor = a.get("h_factor", f.method.h_factor);
+  f.method.boundary_offset = a.get("b_off", f.method.boundary_offset);
+  f.method.boundary_strength = a.get("boundary_strength", f.method.boundary_strength);
+  f.method.density_diffusion_delta = a.get("dd_delta", f.method.density_diffusion_delta);
+  const std::string dd_form = a.str("dd_form", "fourtakas");
+  if (dd_form == "renormalised") f.method.density_diffusion_form = fluid::DensityDiffusionForm::Renormalised;
+  else if (dd_form == "molteni_colagrossi") f.method.density_diffusion_form = fluid::DensityDiffusionForm::MolteniColagrossi;
+  else if (dd_form != "fourtakas") throw std::invalid_argument("dd_form: fourtakas, molteni_colagrossi or renormalised");
   if (a.get("density_diffusion", 0.0) != 0.0) f.effects.push_back("density_diffusion");
   if (a.get("shifting", 0.0) != 0.0) f.effects.push_back("particle_shifting");
   f.method.shifting.coefficient = a.get("shifting_coefficient", f.method.shifting.coefficient);

@@ -3,6 +3,7 @@
 #include <stdexcept>
 #include <type_traits>
 #include <vector>
+#include <Eigen/LU>
 #include <moorsph/fluid/pair_terms.hpp>
 
 namespace moorsph::fluid {
@@ -13,6 +14,7 @@ class PairForcesImpl final : public PairForces<D> {
   static constexpr bool kViscosity = !std::is_same_v<Viscosity, NoTerm>;
   static constexpr bool kXsph = !std::is_same_v<Xsph, NoTerm>;
   static constexpr bool kDiffusion = !std::is_same_v<Diffusion, NoTerm>;
+  static constexpr bool kRenormalised = std::is_same_v<Diffusion, RenormalisedDensityDiffusionTerm<D>>;
 
  public:
   PairForcesImpl(Viscosity viscosity, Xsph xsph, Diffusion diffusion)
@@ -37,10 +39,43 @@ class PairForcesImpl final : public PairForces<D> {
       p_over_rho2_[i] = f.p[i] * inv_rho_[i] * inv_rho_[i];
       volume_[i] = f.m[i] * inv_rho_[i];
     }
+    if constexpr (kRenormalised) densityGradients(ctx);
     interactions_ = sumPairs(ctx);
   }
 
  private:
+  /// G_i of RenormalisedDensityDiffusionTerm: the renormalised density gradient.
+  void densityGradients(FluidContext<D>& ctx) {
+    const FluidParticles<D>& f = ctx.fluid;
+    const NeighbourList& list = ctx.neighbours.fluidFluid();
+    const Domain<D> domain = ctx.setup.domain;
+    const double inv_h = 1.0 / ctx.kernel.h();
+    const double support2 = ctx.kernel.supportSquared();
+    const double grad_scale = -10.0 * ctx.kernel.alpha() * inv_h * inv_h;
+    // det of sum_j V_j r_ji (x) grad_i W_ij on a full neighbourhood: ~1 (it is the
+    // identity for an exact quadrature), so min_det is a fraction of one.
+    const double min_det = diffusion_.min_det;
+    const std::size_t n = f.size();
+    grad_rho_.resize(n);
+#pragma omp parallel for schedule(static)
+    for (std::size_t i = 0; i < n; ++i) {
+      Eigen::Matrix<double, D, D> moment = Eigen::Matrix<double, D, D>::Zero();
+      Vec<D> sum = Vec<D>::Zero();
+      for (std::uint64_t s = list.begin[i]; s < list.begin[i + 1]; ++s) {
+        const std::uint32_t j = list.index[s];
+        Vec<D> rij = f.r[i] - f.r[j];
+        if constexpr (Periodic) rij = domain.minimumImage(rij);
+        const double r2 = rij.squaredNorm();
+        if (r2 >= support2) continue;
+        const double t = 2.0 - std::sqrt(r2) * inv_h;
+        const double F = grad_scale * t * t * t * volume_[j];  // V_j grad_i W_ij = F r_ij
+        moment -= F * rij * rij.transpose();                   // r_ji (x) grad_i W_ij V_j
+        sum += (f.rho[j] - f.rho[i]) * F * rij;
+      }
+      grad_rho_[i] = moment.determinant() > min_det ? Vec<D>(moment.inverse() * sum) : diffusion_.hydrostatic;
+    }
+  }
+
   std::uint64_t sumPairs(FluidContext<D>& ctx) const {
     FluidParticles<D>& f = ctx.fluid;
     const NeighbourList& list = ctx.neighbours.fluidFluid();
@@ -98,7 +133,9 @@ class PairForcesImpl final : public PairForces<D> {
           xsph_weight += w;
         }
         if constexpr (kDiffusion) {
-          const double jump = (rhoi - rho[j]) - diffusion_.hydrostatic.dot(rij);
+          double jump = rhoi - rho[j];
+          if constexpr (kRenormalised) jump -= 0.5 * (grad_rho_[i] + grad_rho_[j]).dot(rij);
+          else jump -= diffusion_.hydrostatic.dot(rij);
           drho += diffusion_.coefficient * jump * F * r2 / (r2 + diffusion_.eta2) * volume[j];
         }
       }
@@ -125,12 +162,16 @@ class PairForcesImpl final : public PairForces<D> {
   Diffusion diffusion_;
   std::uint64_t interactions_ = 0;
   std::vector<double> p_over_rho2_, inv_rho_, volume_;
+  std::vector<Vec<D>> grad_rho_;  ///< renormalised density gradients (kRenormalised only)
 };
 
 // Compile-time composition: pick each term's type from the scene's list, one branch
 // per term, resolved once here.
 template <int D, bool Periodic, class V, class X>
 std::unique_ptr<PairForces<D>> withDiffusion(const FluidSetup<D>& s, V v, X x) {
+  if (s.has("density_diffusion") && s.method.density_diffusion_form == DensityDiffusionForm::Renormalised)
+    return std::make_unique<PairForcesImpl<D, Periodic, V, X, RenormalisedDensityDiffusionTerm<D>>>(
+        v, x, RenormalisedDensityDiffusionTerm<D>(s));
   if (s.has("density_diffusion"))
     return std::make_unique<PairForcesImpl<D, Periodic, V, X, DensityDiffusionTerm<D>>>(v, x, DensityDiffusionTerm<D>(s));
   return std::make_unique<PairForcesImpl<D, Periodic, V, X, NoTerm>>(v, x, NoTerm{});

@@ -58,7 +58,8 @@ void readMethod(MapReader& top, SceneConfig& c) {
     const std::string f = d.text("form", "fourtakas");
     if (f == "fourtakas") p.density_diffusion_form = fluid::DensityDiffusionForm::Fourtakas;
     else if (f == "molteni_colagrossi") p.density_diffusion_form = fluid::DensityDiffusionForm::MolteniColagrossi;
-    else d.fail("form", "expected 'fourtakas' or 'molteni_colagrossi', got '" + f + "'");
+    else if (f == "renormalised") p.density_diffusion_form = fluid::DensityDiffusionForm::Renormalised;
+    else d.fail("form", "expected 'fourtakas', 'molteni_colagrossi' or 'renormalised', got '" + f + "'");
     d.finish();
   } else {
     m.child("density_diffusion");

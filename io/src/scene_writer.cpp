@@ -17,6 +17,15 @@ void vec(YAML::Emitter& e, const char* key, const Triple& t, int dim) {
   e << YAML::EndSeq;
 }
 
+const char* densityDiffusionFormName(fluid::DensityDiffusionForm form) {
+  switch (form) {
+    case fluid::DensityDiffusionForm::Fourtakas: return "fourtakas";
+    case fluid::DensityDiffusionForm::MolteniColagrossi: return "molteni_colagrossi";
+    case fluid::DensityDiffusionForm::Renormalised: return "renormalised";
+  }
+  return "fourtakas";
+}
+
 void extent(YAML::Emitter& e, const BoxExtent& b, int dim) {
   vec(e, "lower", b.lower, dim);
   vec(e, "upper", b.upper, dim);
@@ -54,8 +63,7 @@ std::string resolvedSceneYaml(const SceneConfig& c) {
   e << YAML::Key << "boundary_strength" << YAML::Value << m.boundary_strength;
   e << YAML::Key << "skin_factor" << YAML::Value << m.skin_factor;
   e << YAML::Key << "density_diffusion" << YAML::Value << YAML::BeginMap;
-  e << YAML::Key << "form" << YAML::Value
-    << (m.density_diffusion_form == fluid::DensityDiffusionForm::Fourtakas ? "fourtakas" : "molteni_colagrossi");
+  e << YAML::Key << "form" << YAML::Value << densityDiffusionFormName(m.density_diffusion_form);
   e << YAML::Key << "delta" << YAML::Value << m.density_diffusion_delta << YAML::EndMap;
   e << YAML::Key << "particle_shifting" << YAML::Value << YAML::BeginMap;
   e << YAML::Key << "coefficient" << YAML::Value << m.shifting.coefficient;

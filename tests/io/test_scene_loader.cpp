@@ -342,6 +342,20 @@ TEST(SceneLoader, ParticleShiftingAndTheStepGuard) {
   EXPECT_NE(frac.find("'method.min_dt_fraction': expected a fraction in [0, 1)"), std::string::npos) << frac;
 }
 
+// The density diffusion's form is read, written back and reaches the built fluid.
+TEST(SceneLoader, RenormalisedDensityDiffusion) {
+  const auto c = io::loadSceneText(std::string(kBase) + "method:\n  density_diffusion: {form: renormalised, delta: 0.05}\n" +
+                                       "effects: [pressure, density_diffusion, gravity, walls]\n",
+                                   "s.yaml");
+  EXPECT_EQ(c.method.density_diffusion_form, fluid::DensityDiffusionForm::Renormalised);
+  const auto again = io::loadSceneText(io::resolvedSceneYaml(c), "resolved.yaml");
+  EXPECT_EQ(again.method.density_diffusion_form, fluid::DensityDiffusionForm::Renormalised);
+  EXPECT_EQ(again.method.density_diffusion_delta, 0.05);
+  const std::string bad = errorOf(std::string(kBase) + "method:\n  density_diffusion: {form: antuono}\n");
+  EXPECT_NE(bad.find("'method.density_diffusion.form'"), std::string::npos) << bad;
+  EXPECT_NE(bad.find("'renormalised'"), std::string::npos) << bad;
+}
+
 // A water block fills whole spacings: one whose size is not a multiple of dx stops short
 // of its upper face, and the built scene says where (check and run print it); a block of
 // whole spacings gets no note. Here 0.2 m at dx = 0.015 m is 13.33 spacings: 13 layers,

@@ -16,6 +16,10 @@ enum class XsphForm {
 enum class DensityDiffusionForm {
   MolteniColagrossi,  ///< Molteni & Colagrossi (2009)
   Fourtakas,          ///< Fourtakas et al. (2019): hydrostatic part removed, no wall spurious flux
+  /// Antuono et al. (2010), the delta-SPH term: the jump is corrected by the particles'
+  /// renormalised density gradients, so any linear density field (the hydrostatic one
+  /// included) gives no flux, also where the kernel is cut by the free surface or a wall.
+  Renormalised,
 };
 
 /// Particle shifting (the "particle_shifting" effect, particle_shifting.hpp).

@@ -48,4 +48,26 @@ struct DensityDiffusionTerm : Counted<DensityDiffusionTerm<D>> {
                         : Vec<D>(Vec<D>::Zero())) {}
 };
 
+/// Density diffusion of delta-SPH (Antuono, Colagrossi, Marrone, Molteni 2010, Comput.
+/// Phys. Commun. 181, eq. 10): the jump is
+///   psi_ij = (rho_i - rho_j) - (G_i + G_j) . r_ij / 2,
+///   G_i = L_i sum_j (rho_j - rho_i) grad_i W_ij V_j,  L_i = (sum_j r_ji (x) grad_i W_ij V_j)^-1,
+/// which vanishes for any linear density field. Near a free surface the plain jump of
+/// Molteni & Colagrossi (or Fourtakas) meets a one-sided neighbourhood and diffuses the
+/// wave's dynamic pressure out of the surface layer, a loss of order delta h c_s that
+/// damped free waves (docs/validation/wave-propagation.md). Where L_i is singular (a
+/// particle with too few neighbours: det below `min_det` of the full-support value) G_i
+/// falls back to the hydrostatic gradient rho0 g / c_s^2.
+template <int D>
+struct RenormalisedDensityDiffusionTerm : Counted<RenormalisedDensityDiffusionTerm<D>> {
+  double coefficient;  ///< 2 delta h c_s [m^2/s]
+  double eta2;         ///< [m^2]
+  Vec<D> hydrostatic;  ///< rho0 g / c_s^2, the fallback gradient [kg/m^4]
+  double min_det = 0.1;
+  explicit RenormalisedDensityDiffusionTerm(const FluidSetup<D>& s)
+      : coefficient(2.0 * s.method.density_diffusion_delta * s.h() * s.sound_speed),
+        eta2(0.01 * s.h() * s.h()),
+        hydrostatic(s.rho0 * s.gravity / (s.sound_speed * s.sound_speed)) {}
+};
+
 }  // namespace moorsph::fluid
