@@ -13,6 +13,8 @@
 // with the potential energy each group gave up: the still water's own circulation.
 // usage: moorsph_buoy_rest_energy [D/dx] [cfl] [c_s factor] [density diffusion 0|1]
 //                                 [seconds after t = 0.3 s] [release time s]
+//                                 [settling damping rate 1/s, while held]
+//                                 [1: renormalised density diffusion (delta-SPH)]
 // A release time past the end holds the buoy throughout (the fluid alone).
 #include <cmath>
 #include <cstdio>
@@ -73,6 +75,8 @@ int main(int argc, char** argv) {
   tank.density_diffusion = argOr(argc, argv, 4, 1.0) != 0.0;
   const double t0 = 0.3, end = t0 + argOr(argc, argv, 5, 4.0);
   tank.release_time = argOr(argc, argv, 6, t0);
+  tank.settling_damping = argOr(argc, argv, 7, 0.0);
+  if (argOr(argc, argv, 8, 0.0) != 0.0) tank.density_diffusion_form = fluid::DensityDiffusionForm::Renormalised;
   auto scene = cases::buildTetheredBuoy(tank);
   auto& co = *scene.co;
   const std::vector<Eigen::Vector3d> r0 = startPositions(co.fluid().fluid());

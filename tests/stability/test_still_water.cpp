@@ -1,6 +1,6 @@
 // Stability case 7: a long still-water run. Water of depth d = 0.2 m in a 0.6 m open
 // tank (dx = 0.01 m, 1200 particles, reference method) starts at hydrostatic density
-// settles for 2.5 s under a uniform velocity damping (settling.hpp: the lattice start
+// settles for 2.5 s under a uniform velocity damping (fluid/settling_damping.hpp: the lattice start
 // is not in equilibrium with the wall force), then is left alone to t = 4.5 s (about
 // 5 shallow-water crossing times L / sqrt(g d)). Asserted:
 //  - no NaN/Inf, no particle through a wall, dt = dt_cfl throughout (>= 0.99);
@@ -20,7 +20,7 @@
 #include <cmath>
 #include <moorsph/fluid/tank_scene.hpp>
 
-#include "settling.hpp"
+#include <moorsph/fluid/settling_damping.hpp>
 #include "stability_monitor.hpp"
 
 using namespace moorsph;
@@ -50,7 +50,7 @@ TEST(StabilityStillWater, NoDriftNoSpuriousCurrents) {
   auto scene = fluid::buildTankScene<2>(spec);
   fluid::FluidSimulation<2> sim(scene.setup, scene.fluid, scene.boundary);
   const double settle = 2.5, end = 4.5, bound = 0.06 * std::sqrt(g * depth), rms_bound = 0.01 * std::sqrt(g * depth);
-  sim.addEffect(std::make_unique<stability::Settling<2>>(2.0, settle));
+  sim.addEffect(std::make_unique<fluid::SettlingDamping<2>>(2.0, settle));
   stability::StabilityMonitor<2> monitor(sim, spec.size, false);
   double mass = 0.0;
   for (double m : sim.fluid().m) mass += m;

@@ -20,6 +20,7 @@
 #include <moorsph/bodies/mooring_factory.hpp>
 #include <moorsph/bodies/multibody_system.hpp>
 #include <moorsph/coupling/co_simulation.hpp>
+#include <moorsph/fluid/settling_damping.hpp>
 #include <moorsph/fluid/shape_sampling.hpp>
 #include <moorsph/fluid/tank_scene.hpp>
 
@@ -49,12 +50,16 @@ struct TetheredBuoyTank {
   double width = 1.0;        ///< z [m]
   double depth = 0.5;        ///< still-water depth of the fluid [m] (laboratory: 0.8)
   double release_time = 0.3; ///< bodies held while the fluid settles [s]
+  /// Velocity damping rate of the fluid while the buoy is held [1/s] (0: none;
+  /// fluid/settling_damping.hpp).
+  double settling_damping = 0.0;
   double mu = 1.0e-3;        ///< dynamic viscosity [Pa s] (water)
   double b_off = 0.5;
   double cfl = 0.5;          ///< CFL number of the fluid step (METHOD.md reference 0.5)
   double sound_speed_factor = 10.0;  ///< c_s = factor sqrt(2 g depth) (METHOD.md: 10)
   double boundary_strength = 0.01;   ///< wall force scale (METHOD.md: 0.01)
   bool density_diffusion = true;
+  fluid::DensityDiffusionForm density_diffusion_form = fluid::DensityDiffusionForm::Fourtakas;
   double vertical_pull = 0.12;     ///< 6.2a [m]
   double horizontal_pull = 0.508;  ///< 6.2b [m]
   std::string mooring_model = "tension_only_spring";
@@ -85,6 +90,7 @@ inline TetheredBuoyScene buildTetheredBuoy(const TetheredBuoyTank& t) {
   spec.fluid.mu = t.mu;
   spec.fluid.method.boundary_offset = t.b_off;
   spec.fluid.method.cfl = t.cfl;
+  spec.fluid.method.density_diffusion_form = t.density_diffusion_form;
   spec.fluid.method.boundary_strength = t.boundary_strength;
   spec.fluid.effects = {"pressure", "viscosity", "xsph", "gravity", "walls"};
   if (t.density_diffusion) spec.fluid.effects.push_back("density_diffusion");
@@ -122,6 +128,8 @@ inline TetheredBuoyScene buildTetheredBuoy(const TetheredBuoyTank& t) {
                                             : fluid::sampleSphere<3>(out.start, b.radius, t.dx),
                             fluid::SurfaceInfo{"buoy", true, true, out.start});
   auto fluid_sim = std::make_unique<fluid::FluidSimulation<3>>(scene.setup, water, scene.boundary);
+  if (t.settling_damping > 0.0)
+    fluid_sim->addEffect(std::make_unique<fluid::SettlingDamping<3>>(t.settling_damping, t.release_time));
 
   auto system = std::make_unique<bodies::MultibodySystem>();
   bodies::RigidBodySpec body;
