@@ -9,6 +9,13 @@
 // wavelength at this resolution (3.4 particles per height). That is far from the 5% in
 // 10 wavelengths issue 6 asks for, so the loss is reported, not asserted;
 // see the study for its causes.
+//
+// The second test runs the low-dissipation settings of the session-7 study (h = 2 dx,
+// midpoint predictor, no XSPH, renormalised density diffusion) at 4 particles per
+// height: an inviscid wave keeps its height (water's viscosity takes 1e-4 of it per
+// wavelength), and these settings must keep 90% of it over 1.27 wavelengths; they
+// kept 95.0% when the test was written, where the reference method keeps 71%
+// (docs/validation/wave-propagation.md).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -66,4 +73,28 @@ TEST(WavePropagation, FreeWaveKeepsTheDispersionPeriod) {
   h0 /= rec.eta.size();
   h_end /= rec.eta.size();
   std::printf("height %.4f m after the forcing, %.4f m 4.1 wavelengths later\n", h0, h_end);
+}
+
+TEST(WavePropagation, LowDissipationSettingsKeepTheHeight) {
+  cases::PeriodicWaveTankSpec spec;
+  spec.fluid.dx = 0.0125;
+  spec.fluid.method.h_factor = 2.0;
+  spec.fluid.method.predictor_fraction = 0.5;
+  spec.fluid.method.density_diffusion_form = fluid::DensityDiffusionForm::Renormalised;
+  spec.fluid.effects = {"pressure", "viscosity", "gravity", "walls", "density_diffusion"};
+  spec.amplitude = 0.025;
+  spec.ramp_up = 1.0;
+  spec.forcing_end = 2.5;
+  auto tank = cases::buildPeriodicWaveTank(spec);
+  const double first = spec.forcing_end, last = spec.forcing_end + 2.0 * tank.period;
+  const auto rec = cases::runAndRecord(tank, last + tank.period, tank.period / 50.0);
+  double h0 = 0.0, h1 = 0.0;
+  for (const auto& eta : rec.eta) {
+    h0 += cases::meanWaveHeight(rec.t, eta, tank.period, first, first + tank.period);
+    h1 += cases::meanWaveHeight(rec.t, eta, tank.period, last, last + tank.period);
+  }
+  const double travelled = 0.7614 * (last - first) / tank.wavelength;  // c_g (t1 - t0) / lambda
+  std::printf("low-dissipation settings: H %.4f m -> %.4f m over %.2f wavelengths (%.1f%% kept)\n",
+              h0 / rec.eta.size(), h1 / rec.eta.size(), travelled, 100.0 * h1 / h0);
+  EXPECT_GT(h1 / h0, 0.90);
 }
