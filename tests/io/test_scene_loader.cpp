@@ -43,7 +43,8 @@ std::string errorOf(const std::string& text, const std::vector<std::string>& set
 }  // namespace
 
 TEST(SceneLoader, ExamplesLoadAndBuild) {
-  for (const char* name : {"dam_break_2d", "dam_break_3d", "hydrostatic_tank_2d", "cylinder_in_dam_break_3d"}) {
+  for (const char* name : {"dam_break_2d", "dam_break_3d", "hydrostatic_tank_2d", "cylinder_in_dam_break_3d",
+                           "piston_flume_2d_low_dissipation"}) {
     SCOPED_TRACE(name);
     const auto c = io::loadSceneFile(sourceDir() + "/cases/" + name + ".yaml");
     EXPECT_EQ(c.name, name);
