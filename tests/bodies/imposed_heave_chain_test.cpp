@@ -28,6 +28,8 @@
 
 #include <gtest/gtest.h>
 
+#include "reference_data.hpp"
+
 #include <stdexcept>
 
 #include <cmath>
@@ -44,12 +46,7 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 
 std::vector<std::vector<double>> readTsv(const std::string& rel) {
-  const char* src = std::getenv("MOORSPH_SOURCE_DIR");
-  std::string path = std::string(src ? src : "") + "/../shared/refdata/moordyn_quasistatic_chain/" + rel;
-  if (!src || !std::ifstream(path).good()) {
-    const std::string here = __FILE__;
-    path = here.substr(0, here.rfind("/tests/bodies/")) + "/../shared/refdata/moordyn_quasistatic_chain/" + rel;
-  }
+  const std::string path = moorsph::test::referenceDataPath("moordyn_quasistatic_chain/" + rel);
   std::ifstream in(path);
   std::vector<std::vector<double>> rows;
   std::string line;
@@ -105,7 +102,7 @@ Result runCase(const Case& c, const std::string& amp) {
   const auto ref = readTsv(std::string("WD") + c.depth + "_Chain_ZZP1_" + amp + ".tsv");
   EXPECT_GT(motion.size(), 200u);
   EXPECT_GT(ref.size(), 150u);
-  // Without the reference data (../shared/refdata) stop here with that said, instead of
+  // Without the reference data (../shared/refdata or tests/data/refdata) stop here with that said, instead of
   // indexing empty series below (it crashed the test binary).
   if (motion.empty() || ref.empty())
     throw std::runtime_error("imposed heave chain: reference series for '" + amp + "' not found in refdata");

@@ -10,6 +10,8 @@
 
 #include <gtest/gtest.h>
 
+#include "reference_data.hpp"
+
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -24,12 +26,7 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 
 std::vector<std::vector<double>> readCsv(const std::string& rel) {
-  const char* src = std::getenv("MOORSPH_SOURCE_DIR");
-  std::string path = std::string(src ? src : "") + "/../shared/refdata/" + rel;
-  if (!src || !std::ifstream(path).good()) {
-    const std::string here = __FILE__;
-    path = here.substr(0, here.rfind("/tests/bodies/")) + "/../shared/refdata/" + rel;
-  }
+  const std::string path = moorsph::test::referenceDataPath(rel);
   std::ifstream in(path);
   std::vector<std::vector<double>> rows;
   std::string line;
