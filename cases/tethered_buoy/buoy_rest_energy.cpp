@@ -15,6 +15,7 @@
 //                                 [seconds after t = 0.3 s] [release time s]
 //                                 [settling damping rate 1/s, while held]
 //                                 [1: renormalised density diffusion (delta-SPH)]
+//                                 [1: mirror floor (the mirror_floor effect)]
 // A release time past the end holds the buoy throughout (the fluid alone).
 #include <cmath>
 #include <cstdio>
@@ -77,6 +78,7 @@ int main(int argc, char** argv) {
   tank.release_time = argOr(argc, argv, 6, t0);
   tank.settling_damping = argOr(argc, argv, 7, 0.0);
   if (argOr(argc, argv, 8, 0.0) != 0.0) tank.density_diffusion_form = fluid::DensityDiffusionForm::Renormalised;
+  tank.mirror_floor = argOr(argc, argv, 9, 0.0) != 0.0;
   auto scene = cases::buildTetheredBuoy(tank);
   auto& co = *scene.co;
   const std::vector<Eigen::Vector3d> r0 = startPositions(co.fluid().fluid());

@@ -7,7 +7,7 @@
 // density_diffusion (0|1), shifting (0|1: particle_shifting), shifting_coefficient,
 // shifting_cap, shifting_r, predictor_fraction, period, depth, amplitude (periodic) or
 // height (flume), wavelengths, theory, kappa, maker_start, maker_length, bottom_gap,
-// ramp_up, forcing_end, gain, length, damping_start, damping_k_max, gauges (comma
+// ramp_up, forcing_end, gain, floor (periodic: walls|mirror), length, damping_start, damping_k_max, gauges (comma
 // list of x), end, interval, window (periods averaged at the end), threads;
 // active correction: control_gauges (comma list of x), control_start, control_periods,
 // control_beta, control_stop.
@@ -129,6 +129,7 @@ int main(int argc, char** argv) {
       s.ramp_up = a.get("ramp_up", s.ramp_up);
       s.forcing_end = a.get("forcing_end", s.forcing_end);
       s.gain = a.get("gain", s.gain);
+      s.floor = a.str("floor", s.floor);
       if (a.kv.count("gauges")) s.gauges = numberList(a.str("gauges", ""));
       s.control = controlOf(a);
       tank = cases::buildPeriodicWaveTank(s);

@@ -83,6 +83,12 @@ WaveTank buildPeriodicWaveTank(const PeriodicWaveTankSpec& spec) {
   const double period = 2.0 * M_PI / fluid::waves::angularFrequencyFromWaveNumber(k, depth, kG);
 
   fluid::FluidSetup<2> setup = makeSetup(spec.fluid, dx, depth);
+  if (spec.floor == "mirror") {  // the images replace the floor's boundary particles
+    std::replace(setup.effects.begin(), setup.effects.end(), std::string("walls"), std::string("mirror_floor"));
+    setup.mirror_floor_height = 0.0;
+  } else if (spec.floor != "walls") {
+    throw std::invalid_argument("periodic wave tank: floor must be 'walls' or 'mirror', not '" + spec.floor + "'");
+  }
   const double h = setup.h();
   setup.domain.lower = Vec2(0.0, -4.0 * h);
   setup.domain.upper = Vec2(length, 3.0 * depth + 0.5);
@@ -93,10 +99,12 @@ WaveTank buildPeriodicWaveTank(const PeriodicWaveTankSpec& spec) {
   // The floor: one row of boundary particles at y = 0, normals up, spacing dx,
   // periodic like the water.
   fluid::BoundaryGeometry<2> boundary;
-  fluid::BoundaryParticles<2> floor;
-  const int columns = static_cast<int>(std::lround(length / dx));
-  for (int i = 0; i < columns; ++i) floor.add(Vec2((i + 0.5) * dx, 0.0), {Vec2(0.0, 1.0)}, 0);
-  boundary.addSurface(floor, fluid::SurfaceInfo{"floor", false});
+  if (spec.floor == "walls") {
+    fluid::BoundaryParticles<2> floor;
+    const int columns = static_cast<int>(std::lround(length / dx));
+    for (int i = 0; i < columns; ++i) floor.add(Vec2((i + 0.5) * dx, 0.0), {Vec2(0.0, 1.0)}, 0);
+    boundary.addSurface(floor, fluid::SurfaceInfo{"floor", false});
+  }
 
   WaveTank tank;
   tank.sim = std::make_unique<fluid::FluidSimulation<2>>(setup, water, boundary);

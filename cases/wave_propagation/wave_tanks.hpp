@@ -52,6 +52,8 @@ struct PeriodicWaveTankSpec {
   double ramp_up = 0.0;        ///< [s], half-cosine ramp of the target
   double forcing_end = std::numeric_limits<double>::infinity();  ///< [s]
   double gain = 1.0;           ///< factor on the target (amplitude calibration)
+  /// "walls": one row of boundary particles; "mirror": the mirror_floor effect (images).
+  std::string floor = "walls";
   std::vector<double> gauges;  ///< gauge x [m]; empty: one every tenth of a wavelength
   WaveTankControl control;
 };

@@ -10,7 +10,8 @@
 namespace moorsph::fluid {
 namespace {
 
-const char* const kKnownEffects[] = {"pressure", "viscosity", "xsph", "density_diffusion", "gravity", "walls", "particle_shifting"};
+const char* const kKnownEffects[] = {"pressure", "viscosity", "xsph", "density_diffusion", "gravity", "walls", "particle_shifting",
+                                     "mirror_floor"};
 
 void checkSetup(const std::vector<std::string>& effects) {
   for (const auto& e : effects) {
@@ -73,7 +74,7 @@ void FluidSimulation<D>::addEffect(std::unique_ptr<FluidEffect<D>> effect) {
 template <int D>
 std::vector<std::string> FluidSimulation<D>::effectNames() const {
   std::vector<std::string> names{"pressure"};
-  for (const char* term : {"viscosity", "xsph", "density_diffusion"})
+  for (const char* term : {"viscosity", "xsph", "density_diffusion", "mirror_floor"})
     if (setup_.has(term)) names.emplace_back(term);
   for (const auto& e : effects_) names.emplace_back(e->name());
   return names;

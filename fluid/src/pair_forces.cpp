@@ -9,16 +9,32 @@
 namespace moorsph::fluid {
 namespace {
 
-template <int D, bool Periodic, class Viscosity, class Xsph, class Diffusion>
+template <int D, bool Periodic, class Viscosity, class Xsph, class Diffusion, class Floor>
 class PairForcesImpl final : public PairForces<D> {
   static constexpr bool kViscosity = !std::is_same_v<Viscosity, NoTerm>;
   static constexpr bool kXsph = !std::is_same_v<Xsph, NoTerm>;
   static constexpr bool kDiffusion = !std::is_same_v<Diffusion, NoTerm>;
   static constexpr bool kRenormalised = std::is_same_v<Diffusion, RenormalisedDensityDiffusionTerm<D>>;
+  static constexpr bool kMirror = !std::is_same_v<Floor, NoTerm>;
+
+  /// What the pair terms need of a neighbour j: a particle or its mirror image.
+  struct Neighbour {
+    Vec<D> rij;  ///< r_i - r_j (minimum image)
+    Vec<D> v;
+    double rho, m, p_over_rho2, inv_rho, volume;
+    Vec<D> grad_rho;  ///< kRenormalised only
+  };
+  /// The sums of particle i's rates.
+  struct Sums {
+    Vec<D> acc = Vec<D>::Zero();
+    Vec<D> xsph = Vec<D>::Zero();
+    double xsph_weight = 0.0;
+    double drho = 0.0;
+  };
 
  public:
-  PairForcesImpl(Viscosity viscosity, Xsph xsph, Diffusion diffusion)
-      : viscosity_(viscosity), xsph_(xsph), diffusion_(diffusion) {}
+  PairForcesImpl(Viscosity viscosity, Xsph xsph, Diffusion diffusion, Floor floor)
+      : viscosity_(viscosity), xsph_(xsph), diffusion_(diffusion), floor_(floor) {}
 
   std::uint64_t lastInteractions() const override { return interactions_; }
 
@@ -39,11 +55,58 @@ class PairForcesImpl final : public PairForces<D> {
       p_over_rho2_[i] = f.p[i] * inv_rho_[i] * inv_rho_[i];
       volume_[i] = f.m[i] * inv_rho_[i];
     }
+    if constexpr (kMirror) imageStates(ctx);
     if constexpr (kRenormalised) densityGradients(ctx);
     interactions_ = sumPairs(ctx);
   }
 
  private:
+  /// Density, pressure quotient and volume of each particle's mirror image (MirrorFloorTerm).
+  void imageStates(FluidContext<D>& ctx) {
+    const FluidParticles<D>& f = ctx.fluid;
+    const TaitEos eos = ctx.eos;
+    const std::size_t n = f.size();
+    image_rho_.resize(n);
+    image_p_over_rho2_.resize(n);
+    image_inv_rho_.resize(n);
+    image_volume_.resize(n);
+#pragma omp parallel for schedule(static)
+    for (std::size_t i = 0; i < n; ++i) {
+      const double above = f.r[i][1] - floor_.height;
+      if (above >= floor_.reach) continue;  // its image is out of everyone's reach
+      const double p = f.p[i] + 2.0 * floor_.rho0_g * above;
+      image_rho_[i] = eos.density(p);
+      image_inv_rho_[i] = 1.0 / image_rho_[i];
+      image_p_over_rho2_[i] = p * image_inv_rho_[i] * image_inv_rho_[i];
+      image_volume_[i] = f.m[i] * image_inv_rho_[i];
+    }
+  }
+
+  /// Particle j seen from i; rij is r_i - r_j (minimum image).
+  Neighbour particle(const FluidParticles<D>& f, std::uint32_t j, const Vec<D>& rij) const {
+    Neighbour nb{rij, f.v[j], f.rho[j], f.m[j], p_over_rho2_[j], inv_rho_[j], volume_[j], Vec<D>::Zero()};
+    if constexpr (kRenormalised) nb.grad_rho = grad_rho_[j];
+    return nb;
+  }
+
+  /// The mirror image of particle j seen from i (MirrorFloorTerm); rij is r_i - r_j.
+  Neighbour image(const FluidParticles<D>& f, std::uint32_t j, const Vec<D>& rij) const {
+    Vec<D> rij_image = rij;  // r_i - r_j' = (x_i - x_j, (y_i - floor) + (y_j - floor))
+    rij_image[1] = rij[1] + 2.0 * (f.r[j][1] - floor_.height);
+    Neighbour nb{rij_image, Floor::mirror(f.v[j]), image_rho_[j], f.m[j], image_p_over_rho2_[j], image_inv_rho_[j],
+                 image_volume_[j], Vec<D>::Zero()};
+    if constexpr (kRenormalised) {
+      nb.grad_rho = Floor::mirror(grad_rho_[j]);
+      nb.grad_rho[1] += floor_.ghost_gradient;
+    }
+    return nb;
+  }
+
+  /// True if j's image can be within reach of i (both within 2h of the floor in total).
+  bool imageInReach(const FluidParticles<D>& f, std::size_t i, std::uint32_t j) const {
+    return (f.r[i][1] - floor_.height) + (f.r[j][1] - floor_.height) < floor_.reach;
+  }
+
   /// G_i of RenormalisedDensityDiffusionTerm: the renormalised density gradient.
   void densityGradients(FluidContext<D>& ctx) {
     const FluidParticles<D>& f = ctx.fluid;
@@ -61,19 +124,63 @@ class PairForcesImpl final : public PairForces<D> {
     for (std::size_t i = 0; i < n; ++i) {
       Eigen::Matrix<double, D, D> moment = Eigen::Matrix<double, D, D>::Zero();
       Vec<D> sum = Vec<D>::Zero();
+      auto add = [&](const Vec<D>& rij, double rho_j, double volume_j) {
+        const double r2 = rij.squaredNorm();
+        if (r2 >= support2) return;
+        const double t = 2.0 - std::sqrt(r2) * inv_h;
+        const double F = grad_scale * t * t * t * volume_j;  // V_j grad_i W_ij = F r_ij
+        moment -= F * rij * rij.transpose();                 // r_ji (x) grad_i W_ij V_j
+        sum += (rho_j - f.rho[i]) * F * rij;
+      };
       for (std::uint64_t s = list.begin[i]; s < list.begin[i + 1]; ++s) {
         const std::uint32_t j = list.index[s];
         Vec<D> rij = f.r[i] - f.r[j];
         if constexpr (Periodic) rij = domain.minimumImage(rij);
-        const double r2 = rij.squaredNorm();
-        if (r2 >= support2) continue;
-        const double t = 2.0 - std::sqrt(r2) * inv_h;
-        const double F = grad_scale * t * t * t * volume_[j];  // V_j grad_i W_ij = F r_ij
-        moment -= F * rij * rij.transpose();                   // r_ji (x) grad_i W_ij V_j
-        sum += (f.rho[j] - f.rho[i]) * F * rij;
+        add(rij, f.rho[j], volume_[j]);
+        if constexpr (kMirror)
+          if (imageInReach(f, i, j)) {
+            const Neighbour nb = image(f, j, rij);
+            add(nb.rij, nb.rho, nb.volume);
+          }
       }
+      if constexpr (kMirror)
+        if (imageInReach(f, i, static_cast<std::uint32_t>(i))) {
+          const Neighbour self = image(f, static_cast<std::uint32_t>(i), Vec<D>::Zero());
+          add(self.rij, self.rho, self.volume);
+        }
       grad_rho_[i] = moment.determinant() > min_det ? Vec<D>(moment.inverse() * sum) : diffusion_.hydrostatic;
     }
+  }
+
+  /// Adds neighbour nb's share of particle i's rates; false if nb is out of reach.
+  bool addPair(Sums& sums, const Vec<D>& vi, double rhoi, double p_over_rho2_i, double inv_rhoi, const Vec<D>& grad_rho_i,
+               const Neighbour& nb, double inv_h, double support2, double grad_scale, double alpha) const {
+    const Vec<D>& rij = nb.rij;
+    const double r2 = rij.squaredNorm();
+    if (r2 >= support2) return false;
+    const double q = std::sqrt(r2) * inv_h;
+    const double t = 2.0 - q;
+    const double t3 = t * t * t;
+    const double F = grad_scale * t3;  // grad_i W_ij = F r_ij
+    const Vec<D> vij = vi - nb.v;
+    const double vr = vij.dot(rij);
+    sums.drho += nb.m * vr * F;
+    double coef = p_over_rho2_i + nb.p_over_rho2;
+    if constexpr (kViscosity) coef -= viscosity_.xi_mu_eff * vr * inv_rhoi * nb.inv_rho / (r2 + viscosity_.beta2);
+    sums.acc -= (nb.m * coef * F) * rij;
+    if constexpr (kXsph) {
+      const double w = alpha * t3 * t * (1.0 + 2.0 * q) * nb.volume;
+      sums.xsph += w * nb.v;
+      sums.xsph_weight += w;
+    }
+    if constexpr (kDiffusion) {
+      double jump = rhoi - nb.rho;
+      if constexpr (kRenormalised) jump -= 0.5 * (grad_rho_i + nb.grad_rho).dot(rij);
+      else jump -= diffusion_.hydrostatic.dot(rij);
+      sums.drho += diffusion_.coefficient * jump * F * r2 / (r2 + diffusion_.eta2) * nb.volume;
+    }
+    (void)grad_rho_i;
+    return true;
   }
 
   std::uint64_t sumPairs(FluidContext<D>& ctx) const {
@@ -85,72 +192,47 @@ class PairForcesImpl final : public PairForces<D> {
     const double support2 = kernel.supportSquared();
     const double grad_scale = -10.0 * kernel.alpha() * inv_h * inv_h;
     const double alpha = kernel.alpha();
-    const auto* r = f.r.data();
-    const auto* v = f.v.data();
-    const double* rho = f.rho.data();
-    const double* m = f.m.data();
-    const double* p_over_rho2 = p_over_rho2_.data();
-    const double* inv_rho = inv_rho_.data();
-    const double* volume = volume_.data();
     const std::size_t n = f.size();
     std::uint64_t interactions = 0;
 
 #pragma omp parallel for schedule(static) reduction(+ : interactions)
     for (std::size_t i = 0; i < n; ++i) {
-      const Vec<D> ri = r[i];
-      const Vec<D> vi = v[i];
-      const double rhoi = rho[i];
-      const double p_over_rho2_i = p_over_rho2[i];
-      const double inv_rhoi = inv_rho[i];
-      Vec<D> acc = Vec<D>::Zero();
-      Vec<D> xsph_sum = Vec<D>::Zero();
-      double xsph_weight = 0.0;
-      double drho = 0.0;
+      const Vec<D> vi = f.v[i];
+      const double rhoi = f.rho[i];
+      const double p_over_rho2_i = p_over_rho2_[i];
+      const double inv_rhoi = inv_rho_[i];
+      const Vec<D> grad_rho_i = kRenormalised ? grad_rho_[i] : Vec<D>(Vec<D>::Zero());
+      Sums sums;
       std::uint32_t count = 0;
       for (std::uint64_t s = list.begin[i]; s < list.begin[i + 1]; ++s) {
         const std::uint32_t j = list.index[s];
-        Vec<D> rij = ri - r[j];
+        Vec<D> rij = f.r[i] - f.r[j];
         if constexpr (Periodic) rij = domain.minimumImage(rij);
-        const double r2 = rij.squaredNorm();
-        if (r2 >= support2) continue;
+        if (!addPair(sums, vi, rhoi, p_over_rho2_i, inv_rhoi, grad_rho_i, particle(f, j, rij), inv_h,
+                     support2, grad_scale, alpha))
+          continue;  // the image is farther still
         ++count;
-        const double dist = std::sqrt(r2);
-        const double q = dist * inv_h;
-        const double t = 2.0 - q;
-        const double t3 = t * t * t;
-        const double F = grad_scale * t3;  // grad_i W_ij = F r_ij
-        const Vec<D> vij = vi - v[j];
-        const double vr = vij.dot(rij);
-        const double mj = m[j];
-        drho += mj * vr * F;
-        double coef = p_over_rho2_i + p_over_rho2[j];
-        if constexpr (kViscosity)
-          coef -= viscosity_.xi_mu_eff * vr * inv_rhoi * inv_rho[j] / (r2 + viscosity_.beta2);
-        acc -= (mj * coef * F) * rij;
-        if constexpr (kXsph) {
-          const double w = alpha * t3 * t * (1.0 + 2.0 * q) * volume[j];
-          xsph_sum += w * v[j];
-          xsph_weight += w;
-        }
-        if constexpr (kDiffusion) {
-          double jump = rhoi - rho[j];
-          if constexpr (kRenormalised) jump -= 0.5 * (grad_rho_[i] + grad_rho_[j]).dot(rij);
-          else jump -= diffusion_.hydrostatic.dot(rij);
-          drho += diffusion_.coefficient * jump * F * r2 / (r2 + diffusion_.eta2) * volume[j];
-        }
+        if constexpr (kMirror)
+          if (imageInReach(f, i, j))
+            addPair(sums, vi, rhoi, p_over_rho2_i, inv_rhoi, grad_rho_i, image(f, j, rij), inv_h, support2,
+                    grad_scale, alpha);
       }
+      if constexpr (kMirror)
+        if (imageInReach(f, i, static_cast<std::uint32_t>(i)))
+          addPair(sums, vi, rhoi, p_over_rho2_i, inv_rhoi, grad_rho_i,
+                  image(f, static_cast<std::uint32_t>(i), Vec<D>::Zero()), inv_h, support2, grad_scale,
+                  alpha);
       interactions += count;
-      f.dvdt[i] = acc;
-      f.drhodt[i] = drho;
+      f.dvdt[i] = sums.acc;
+      f.drhodt[i] = sums.drho;
       if constexpr (kXsph) {
         if (xsph_.form == XsphForm::Reference) {
-          const double self = kernel.valueAtZero() * volume[i];  // the sum includes j = i
-          f.drdt[i] = (1.0 - xsph_.eps) * vi + xsph_.eps * (xsph_sum + self * vi);
+          const double self = kernel.valueAtZero() * volume_[i];  // the sum includes j = i
+          f.drdt[i] = (1.0 - xsph_.eps) * vi + xsph_.eps * (sums.xsph + self * vi);
         } else {
-          f.drdt[i] = vi + xsph_.eps * (xsph_sum - xsph_weight * vi);
+          f.drdt[i] = vi + xsph_.eps * (sums.xsph - sums.xsph_weight * vi);
         }
       } else {
-        (void)xsph_weight;
         f.drdt[i] = vi;
       }
     }
@@ -160,21 +242,28 @@ class PairForcesImpl final : public PairForces<D> {
   Viscosity viscosity_;
   Xsph xsph_;
   Diffusion diffusion_;
+  Floor floor_;
   std::uint64_t interactions_ = 0;
   std::vector<double> p_over_rho2_, inv_rho_, volume_;
   std::vector<Vec<D>> grad_rho_;  ///< renormalised density gradients (kRenormalised only)
+  std::vector<double> image_rho_, image_p_over_rho2_, image_inv_rho_, image_volume_;  ///< kMirror only
 };
 
 // Compile-time composition: pick each term's type from the scene's list, one branch
 // per term, resolved once here.
+template <int D, bool Periodic, class V, class X, class Dd>
+std::unique_ptr<PairForces<D>> withFloor(const FluidSetup<D>& s, V v, X x, Dd d) {
+  if (s.has("mirror_floor"))
+    return std::make_unique<PairForcesImpl<D, Periodic, V, X, Dd, MirrorFloorTerm<D>>>(v, x, d, MirrorFloorTerm<D>(s));
+  return std::make_unique<PairForcesImpl<D, Periodic, V, X, Dd, NoTerm>>(v, x, d, NoTerm{});
+}
+
 template <int D, bool Periodic, class V, class X>
 std::unique_ptr<PairForces<D>> withDiffusion(const FluidSetup<D>& s, V v, X x) {
   if (s.has("density_diffusion") && s.method.density_diffusion_form == DensityDiffusionForm::Renormalised)
-    return std::make_unique<PairForcesImpl<D, Periodic, V, X, RenormalisedDensityDiffusionTerm<D>>>(
-        v, x, RenormalisedDensityDiffusionTerm<D>(s));
-  if (s.has("density_diffusion"))
-    return std::make_unique<PairForcesImpl<D, Periodic, V, X, DensityDiffusionTerm<D>>>(v, x, DensityDiffusionTerm<D>(s));
-  return std::make_unique<PairForcesImpl<D, Periodic, V, X, NoTerm>>(v, x, NoTerm{});
+    return withFloor<D, Periodic>(s, v, x, RenormalisedDensityDiffusionTerm<D>(s));
+  if (s.has("density_diffusion")) return withFloor<D, Periodic>(s, v, x, DensityDiffusionTerm<D>(s));
+  return withFloor<D, Periodic>(s, v, x, NoTerm{});
 }
 
 template <int D, bool Periodic, class V>

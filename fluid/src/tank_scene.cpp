@@ -31,6 +31,10 @@ Scene<D> buildTankScene(const TankSpec<D>& spec) {
 
   BoxFaces<D> faces = allFaces<D>();
   if (!spec.lid) faces = openTopTank<D>();
+  if (scene.setup.has("mirror_floor")) {  // the images close the floor: no -y face
+    faces[2 * 1] = false;
+    scene.setup.mirror_floor_height = 0.0;
+  }
   scene.boundary.addSurface(sampleBoxSurface<D>(Vec<D>::Zero(), spec.size, spacing, faces, NormalSide::Inward),
                             SurfaceInfo{"tank", false});
   return scene;

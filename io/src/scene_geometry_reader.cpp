@@ -200,6 +200,11 @@ void readGeometry(MapReader& top, SceneConfig& c) {
       t.name = m.text("name", "tank");
       t.box = readExtent(m, c, 2.0 * c.dx, "tank");
       t.lid = m.boolean("lid", false);
+      const std::string floor = m.text("floor", "walls");
+      if (floor != "walls" && floor != "mirror")
+        m.fail("floor", "expected 'walls' (a row of boundary particles) or 'mirror' (the mirror_floor effect), got '" +
+                            floor + "'");
+      t.mirror_floor = floor == "mirror";
       t.where.text = src.locate(item, item_path);
       if (uniqueName(c, t.name).empty()) m.fail("name", "another surface is already named '" + t.name + "'");
       m.finish();

@@ -130,6 +130,17 @@ void readDomain(MapReader& top, SceneConfig& c) {
   d.finish();
 }
 
+/// A tank's "floor: mirror" and the "mirror_floor" effect go together, for one tank.
+void checkMirrorFloor(MapReader& top, const SceneConfig& c) {
+  const auto mirrored = std::count_if(c.tanks.begin(), c.tanks.end(), [](const TankConfig& t) { return t.mirror_floor; });
+  if (mirrored > 1) top.fail("geometry", "only one tank may have 'floor: mirror'");
+  if (mirrored == 1 && !c.hasEffect("mirror_floor"))
+    top.fail("effects", "a tank has 'floor: mirror' but 'mirror_floor' is not in the effects");
+  if (mirrored == 0 && c.hasEffect("mirror_floor"))
+    top.fail("effects", "'mirror_floor' is listed but no tank has 'floor: mirror'");
+}
+
+
 SceneConfig readScene(const YAML::Node& root, const YamlSource& source) {
   SceneConfig c;
   c.file = source.file;
@@ -190,6 +201,7 @@ SceneConfig readScene(const YAML::Node& root, const YamlSource& source) {
   }
   if (c.bodies.empty() && c.hasEffect("bodies"))
     top.fail("effects", "'bodies' is listed but the scene has no 'bodies' list");
+  checkMirrorFloor(top, c);
   readOutput(top, c);
   top.finish();
 
@@ -201,7 +213,7 @@ SceneConfig readScene(const YAML::Node& root, const YamlSource& source) {
 const std::vector<std::string>& knownEffects() {
   static const std::vector<std::string> known{"pressure", "viscosity", "xsph",         "density_diffusion", "gravity",
                                               "walls",    "piston",    "damping_zone", "forcing_region", "bodies",
-                                              "particle_shifting"};
+                                              "particle_shifting", "mirror_floor"};
   return known;
 }
 

@@ -84,7 +84,9 @@ std::string resolvedSceneYaml(const SceneConfig& c) {
     e << YAML::BeginMap << YAML::Key << "tank" << YAML::Value << YAML::BeginMap;
     e << YAML::Key << "name" << YAML::Value << t.name;
     extent(e, t.box, c.dim);
-    e << YAML::Key << "lid" << YAML::Value << t.lid << YAML::EndMap << YAML::EndMap;
+    e << YAML::Key << "lid" << YAML::Value << t.lid;
+    if (t.mirror_floor) e << YAML::Key << "floor" << YAML::Value << "mirror";
+    e << YAML::EndMap << YAML::EndMap;
   }
   for (const auto& w : c.water) {
     e << YAML::BeginMap << YAML::Key << "water" << YAML::Value << YAML::BeginMap;

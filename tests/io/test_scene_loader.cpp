@@ -357,6 +357,47 @@ TEST(SceneLoader, RenormalisedDensityDiffusion) {
   EXPECT_NE(bad.find("'renormalised'"), std::string::npos) << bad;
 }
 
+// A tank with "floor: mirror" leaves out its floor's particles and sets the
+// mirror_floor plane at its lower face; the key and the effect go together.
+TEST(SceneLoader, MirrorFloorTank) {
+  const std::string mirror = R"(dim: 2
+end_time: 0.1
+resolution:
+  dx: 0.01
+fluid:
+  sound_speed: 25
+effects: [pressure, gravity, walls, mirror_floor]
+geometry:
+  - tank: {lower: [0, -0.05], upper: [0.4, 0.3], floor: mirror}
+  - water: {lower: [0, -0.05], upper: [0.1, 0.2]}
+)";
+  const auto c = io::loadSceneText(mirror, "s.yaml");
+  const auto built = io::buildScene<2>(c);
+  EXPECT_TRUE(built.scene.setup.has("mirror_floor"));
+  EXPECT_DOUBLE_EQ(built.scene.setup.mirror_floor_height, -0.05);
+  int up = 0;  // normals of a floor (the side walls' bottom particles point along x only)
+  for (const auto& n : built.scene.boundary.particles.normals) up += n[1] > 0.5;
+  EXPECT_EQ(up, 0) << "a floor particle was left in";
+  const auto walls = io::buildScene<2>(io::loadSceneText(kBase, "s.yaml"));
+  EXPECT_FALSE(walls.scene.setup.has("mirror_floor"));
+  for (const auto& n : walls.scene.boundary.particles.normals) up += n[1] > 0.5;
+  EXPECT_GT(up, 30) << "the walls floor has its row";
+  const auto again = io::loadSceneText(io::resolvedSceneYaml(c), "resolved.yaml");
+  EXPECT_TRUE(again.tanks.at(0).mirror_floor);
+
+  const std::string no_effect = errorOf(std::string(kBase) + "effects: [pressure, gravity, walls, mirror_floor]\n");
+  EXPECT_NE(no_effect.find("no tank has 'floor: mirror'"), std::string::npos) << no_effect;
+  std::string missing = mirror;
+  missing.replace(missing.find(", mirror_floor]"), 15, "]");
+  const std::string no_key = errorOf(missing);
+  EXPECT_NE(no_key.find("'mirror_floor' is not in the effects"), std::string::npos) << no_key;
+  std::string typo = mirror;
+  typo.replace(typo.find("floor: mirror"), 13, "floor: mirrored");
+  const std::string bad = errorOf(typo);
+  EXPECT_NE(bad.find("'geometry[0].tank.floor'"), std::string::npos) << bad;
+  EXPECT_NE(bad.find("s.yaml:9:"), std::string::npos) << bad;
+}
+
 // A water block fills whole spacings: one whose size is not a multiple of dx stops short
 // of its upper face, and the built scene says where (check and run print it); a block of
 // whole spacings gets no note. Here 0.2 m at dx = 0.015 m is 13.33 spacings: 13 layers,

@@ -60,6 +60,8 @@ struct TetheredBuoyTank {
   double boundary_strength = 0.01;   ///< wall force scale (METHOD.md: 0.01)
   bool density_diffusion = true;
   fluid::DensityDiffusionForm density_diffusion_form = fluid::DensityDiffusionForm::Fourtakas;
+  /// The floor as mirror images (the mirror_floor effect) instead of a row of wall particles.
+  bool mirror_floor = false;
   double vertical_pull = 0.12;     ///< 6.2a [m]
   double horizontal_pull = 0.508;  ///< 6.2b [m]
   std::string mooring_model = "tension_only_spring";
@@ -94,6 +96,7 @@ inline TetheredBuoyScene buildTetheredBuoy(const TetheredBuoyTank& t) {
   spec.fluid.method.boundary_strength = t.boundary_strength;
   spec.fluid.effects = {"pressure", "viscosity", "xsph", "gravity", "walls"};
   if (t.density_diffusion) spec.fluid.effects.push_back("density_diffusion");
+  if (t.mirror_floor) spec.fluid.effects.push_back("mirror_floor");
   auto scene = fluid::buildTankScene<3>(spec);
 
   TetheredBuoyScene out;

@@ -18,6 +18,7 @@ struct FluidSetup {
   Domain<D> domain;
   MethodParameters method = MethodParameters::reference();
   std::vector<std::string> effects{"pressure", "gravity", "walls"};
+  double mirror_floor_height = 0.0;  ///< the floor plane y of the "mirror_floor" effect [m]
 
   double h() const { return method.h_factor * dx; }
   bool has(const std::string& effect) const {

@@ -1,6 +1,7 @@
 #pragma once
 // The optional terms of the fluid pair loop, each a small value type constructed
 // only when the scene names it (see pair_forces.hpp).
+#include <cmath>
 #include <moorsph/fluid/counted.hpp>
 #include <moorsph/fluid/fluid_setup.hpp>
 
@@ -68,6 +69,33 @@ struct RenormalisedDensityDiffusionTerm : Counted<RenormalisedDensityDiffusionTe
       : coefficient(2.0 * s.method.density_diffusion_delta * s.h() * s.sound_speed),
         eta2(0.01 * s.h() * s.h()),
         hydrostatic(s.rho0 * s.gravity / (s.sound_speed * s.sound_speed)) {}
+};
+
+/// A free-slip floor y = height made of mirror images ("ghost particles", Libersky et
+/// al. 1993; the ghost-fluid wall of Colagrossi & Landrini 2003, J. Comput. Phys. 191).
+/// Every fluid particle j within 2h of the floor has an image j' at y' = 2 height - y_j
+/// with the horizontal velocity kept and the vertical one reversed, and the pressure
+/// continued hydrostatically, P_j' = P_j + 2 rho0 |g| (y_j - height), so that the
+/// still water's pressure gradient carries on through the floor. The images complete
+/// the kernel: particles near the floor see a full neighbourhood in the pressure,
+/// continuity, diffusion and XSPH sums, where the "walls" force only pushes. Used with
+/// flat floors only (the periodic wave tank); walls remain boundary particles.
+template <int D>
+struct MirrorFloorTerm : Counted<MirrorFloorTerm<D>> {
+  double height;           ///< the floor plane's y [m]
+  double rho0_g;           ///< rho0 |g| [Pa/m]
+  double ghost_gradient;   ///< 2 rho0 g_y / c_s^2: the image's density gradient shift [kg/m^4]
+  double reach;            ///< 2h: particles farther than this from the floor have no image in range
+  explicit MirrorFloorTerm(const FluidSetup<D>& s)
+      : height(s.mirror_floor_height),
+        rho0_g(s.rho0 * std::abs(s.gravity[1])),
+        ghost_gradient(2.0 * s.rho0 * s.gravity[1] / (s.sound_speed * s.sound_speed)),
+        reach(2.0 * s.h()) {}
+  /// The image of a vector: its vertical component reversed.
+  static Vec<D> mirror(Vec<D> a) {
+    a[1] = -a[1];
+    return a;
+  }
 };
 
 }  // namespace moorsph::fluid

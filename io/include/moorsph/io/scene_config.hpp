@@ -31,6 +31,8 @@ struct TankConfig {
   std::string name = "tank";
   BoxExtent box;
   bool lid = false;          ///< closed top (face +y)
+  /// floor: mirror: no floor particles; the "mirror_floor" effect's images close it.
+  bool mirror_floor = false;
   bool track_reaction = false;  ///< set when a pressure probe sits on it
   SourceLocation where;
 };
