@@ -4,6 +4,7 @@
 #include <cmath>
 #include <sstream>
 #include <moorsph/fluid/gravity.hpp>
+#include <moorsph/fluid/mirror_floor.hpp>
 #include <moorsph/fluid/particle_shifting.hpp>
 #include <moorsph/fluid/run_guard.hpp>
 
@@ -51,6 +52,7 @@ FluidSimulation<D>::FluidSimulation(FluidSetup<D> setup, FluidParticles<D> fluid
 template <int D>
 void FluidSimulation<D>::buildEffects(BoundaryGeometry<D> boundary) {
   if (setup_.has("gravity")) effects_.push_back(std::make_unique<Gravity<D>>(setup_.gravity));
+  if (setup_.has("mirror_floor")) effects_.push_back(std::make_unique<MirrorFloorReflection<D>>(setup_.mirror_floor_height));
   if (setup_.has("walls")) {
     auto walls = std::make_unique<Walls<D>>(std::move(boundary), setup_);
     walls_ = walls.get();
@@ -161,12 +163,14 @@ void FluidSimulation<D>::step() {
   {
     PhaseTimers::Scope timing(timers_, phase_integrate_);
     predict(predicted_dt);
+    for (auto& e : effects_) e->constrain(fluid_);
   }
   for (auto& e : effects_) e->advanceTo(time_ + predicted_dt, StepStage::Predicted);
   evaluateRates(time_ + predicted_dt, false);
   {
     PhaseTimers::Scope timing(timers_, phase_integrate_);
     correct(dt);
+    for (auto& e : effects_) e->constrain(fluid_);
   }
   time_ += dt;
   dt_ = dt;

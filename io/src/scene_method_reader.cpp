@@ -1,4 +1,5 @@
 // The method section of a scene file: the reference preset with options on top.
+#include <cstdio>
 #include "scene_sections.hpp"
 
 namespace moorsph::io::detail {
@@ -49,7 +50,14 @@ void readMethod(MapReader& top, SceneConfig& c) {
   p.viscosity_xi = m.positive("viscosity_xi", p.viscosity_xi, "Cleary xi");
   p.viscosity_beta_factor = m.positive("viscosity_beta_factor", p.viscosity_beta_factor, "beta / dx", true);
   p.boundary_offset = m.positive("b_off", p.boundary_offset, "wall offset in units of dx", true);
-  if (p.boundary_offset > 1.0) m.fail("b_off", "expected a wall offset in [0, 1] dx (reference 0.5)");
+  // The wall law acts out to r_perp = h - b_off dx (METHOD.md section 2): at larger h a
+  // larger offset keeps that reach, and the lattice start's distance, what it is at h = 1.2 dx.
+  if (p.boundary_offset >= p.h_factor - 0.25) {
+    char msg[160];
+    std::snprintf(msg, sizeof msg, "expected a wall offset below h_factor - 0.25 = %g dx (reference 0.5), got %g",
+                  p.h_factor - 0.25, p.boundary_offset);
+    m.fail("b_off", msg);
+  }
   p.boundary_strength = m.positive("boundary_strength", p.boundary_strength, "wall force scale");
   p.skin_factor = m.positive("skin_factor", p.skin_factor, "Verlet skin / 2h");
   if (m.has("density_diffusion")) {

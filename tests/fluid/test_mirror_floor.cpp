@@ -18,6 +18,7 @@
 #include <cstdio>
 #include <moorsph/fluid/box_geometry.hpp>
 #include <moorsph/fluid/fluid_simulation.hpp>
+#include <moorsph/fluid/tank_scene.hpp>
 
 using namespace moorsph::fluid;
 
@@ -123,4 +124,45 @@ TEST(MirrorFloor, IsFreeSlip) {
               bottom_u, U);
   EXPECT_NEAR(mean_u, U, 1e-3 * U);
   EXPECT_NEAR(bottom_u, U, 1e-3 * U);
+}
+
+// A dam break in a tank with side walls and the mirror floor: the front runs along the
+// floor, slams into the far wall's corner and falls back. The floor must hold (no
+// particle below it, however hard it is hit in the corner: MirrorFloorReflection) and
+// the total energy may only fall (kinetic + potential + elastic; nothing here adds
+// any). Side walls at h = 2 dx with b_off = 1.3: the wall law's reach, h - b_off dx =
+// 0.7 dx, is what it is at the reference h = 1.2 dx, b_off = 0.5.
+TEST(MirrorFloor, HoldsADamBreakWithSideWalls) {
+  TankSpec<2> spec;
+  spec.size = Vec<2>(0.4, 0.3);
+  spec.water_upper = Vec<2>(0.1, 0.2);
+  spec.dx = kDx / 2;
+  spec.fluid.sound_speed = 10.0 * std::sqrt(2.0 * kG * 0.2);
+  spec.fluid.method.h_factor = 2.0;
+  spec.fluid.method.boundary_offset = 1.3;
+  spec.fluid.method.predictor_fraction = 0.5;
+  spec.fluid.method.density_diffusion_form = DensityDiffusionForm::Renormalised;
+  spec.fluid.effects = {"pressure", "viscosity", "density_diffusion", "gravity", "walls", "mirror_floor"};
+  auto scene = buildTankScene<2>(spec);
+  FluidSimulation<2> sim(scene.setup, scene.fluid, scene.boundary);
+  const auto e0 = sim.calcEnergy();
+  const double total0 = e0.kinetic + e0.potential + e0.elastic;
+  double worst_gain = 0.0, ke_peak = 0.0, front = 0.0;
+  while (sim.time() < 0.6) {
+    sim.step();
+    const auto e = sim.calcEnergy();
+    worst_gain = std::max(worst_gain, e.kinetic + e.potential + e.elastic - total0);
+    ke_peak = std::max(ke_peak, e.kinetic);
+    for (const auto& r : sim.fluid().r) {
+      ASSERT_GE(r[1], 0.0) << "a particle is below the floor at t = " << sim.time();
+      front = std::max(front, r[0]);
+    }
+  }
+  const auto e = sim.calcEnergy();
+  std::printf("dam break on the mirror floor: front reached x = %.3f m; KE peak %.3f J/m, at 0.6 s %.3f J/m; "
+              "largest energy gain %.2e J/m (%.2e of the peak KE); lost %.3f J/m\n",
+              front, ke_peak, e.kinetic, worst_gain, worst_gain / ke_peak, total0 - (e.kinetic + e.potential + e.elastic));
+  EXPECT_GT(front, 0.39) << "the front did not reach the far wall";
+  EXPECT_LT(front, 0.4 + 0.5 * spec.dx) << "a particle went into the far wall";
+  EXPECT_LT(worst_gain, 0.01 * ke_peak);
 }
