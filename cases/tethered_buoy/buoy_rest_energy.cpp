@@ -16,6 +16,7 @@
 //                                 [settling damping rate 1/s, while held]
 //                                 [1: renormalised density diffusion (delta-SPH)]
 //                                 [1: mirror floor (the mirror_floor effect)]
+//                                 [h / dx] [b_off] [wall law h_w / dx]
 // A release time past the end holds the buoy throughout (the fluid alone).
 #include <cmath>
 #include <cstdio>
@@ -79,6 +80,9 @@ int main(int argc, char** argv) {
   tank.settling_damping = argOr(argc, argv, 7, 0.0);
   if (argOr(argc, argv, 8, 0.0) != 0.0) tank.density_diffusion_form = fluid::DensityDiffusionForm::Renormalised;
   tank.mirror_floor = argOr(argc, argv, 9, 0.0) != 0.0;
+  tank.h_factor = argOr(argc, argv, 10, tank.h_factor);
+  tank.b_off = argOr(argc, argv, 11, tank.b_off);
+  tank.boundary_h_factor = argOr(argc, argv, 12, tank.boundary_h_factor);
   auto scene = cases::buildTetheredBuoy(tank);
   auto& co = *scene.co;
   const std::vector<Eigen::Vector3d> r0 = startPositions(co.fluid().fluid());

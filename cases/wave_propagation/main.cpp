@@ -3,7 +3,7 @@
 //
 //   moorsph_wave_tank periodic|flume [key=value ...] --out FILE.csv
 //
-// Keys (SI units): dx, mu, cfl, h_factor, b_off, boundary_strength, dd_delta, dd_form, no_viscosity (1: drop the term), sound_speed, xsph_form (reference|monaghan), xsph_eps,
+// Keys (SI units): dx, mu, cfl, h_factor, b_off, boundary_strength, boundary_h_factor, dd_delta, dd_form, no_viscosity (1: drop the term), sound_speed, xsph_form (reference|monaghan), xsph_eps,
 // density_diffusion (0|1), shifting (0|1: particle_shifting), shifting_coefficient,
 // shifting_cap, shifting_r, predictor_fraction, period, depth, amplitude (periodic) or
 // height (flume), wavelengths, theory, kappa, maker_start, maker_length, bottom_gap,
@@ -77,6 +77,7 @@ cases::WaveTankFluid fluidOf(Args& a) {
   f.method.h_factor = a.get("h_factor", f.method.h_factor);
   f.method.boundary_offset = a.get("b_off", f.method.boundary_offset);
   f.method.boundary_strength = a.get("boundary_strength", f.method.boundary_strength);
+  f.method.boundary_h_factor = a.get("boundary_h_factor", f.method.boundary_h_factor);
   f.method.density_diffusion_delta = a.get("dd_delta", f.method.density_diffusion_delta);
   const std::string dd_form = a.str("dd_form", "fourtakas");
   if (dd_form == "renormalised") f.method.density_diffusion_form = fluid::DensityDiffusionForm::Renormalised;

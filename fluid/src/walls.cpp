@@ -9,11 +9,23 @@
 #include <string>
 
 namespace moorsph::fluid {
+namespace {
+
+/// The wall law's length: its own factor of dx if the method sets one, else the kernel's h.
+template <int D>
+double wallLength(const FluidSetup<D>& s) {
+  const double h_w = s.method.boundary_h_factor > 0.0 ? s.method.boundary_h_factor * s.dx : s.h();
+  // The fluid-boundary lists reach 2h: a longer wall law would miss pairs.
+  if (h_w > s.h() * (1.0 + 1e-12)) throw std::invalid_argument("boundary_h_factor must not exceed h_factor");
+  return h_w;
+}
+
+}  // namespace
 
 template <int D>
 Walls<D>::Walls(BoundaryGeometry<D> geometry, const FluidSetup<D>& setup)
     : geometry_(std::move(geometry)),
-      law_(setup.method.boundary_strength, setup.sound_speed, setup.h(), setup.dx, setup.method.boundary_offset) {
+      law_(setup.method.boundary_strength, setup.sound_speed, wallLength(setup), setup.dx, setup.method.boundary_offset) {
   if (geometry_.empty()) throw std::invalid_argument("effects: 'walls' is named but the scene has no boundary surfaces");
   tracked_.assign(geometry_.particles.size(), 0);
   for (std::size_t k = 0; k < tracked_.size(); ++k) {

@@ -49,13 +49,17 @@ void readMethod(MapReader& top, SceneConfig& c) {
   else m.fail("xsph_form", "expected 'reference' or 'monaghan', got '" + form + "'");
   p.viscosity_xi = m.positive("viscosity_xi", p.viscosity_xi, "Cleary xi");
   p.viscosity_beta_factor = m.positive("viscosity_beta_factor", p.viscosity_beta_factor, "beta / dx", true);
+  p.boundary_h_factor = m.positive("boundary_h_factor", p.h_factor, "wall law length h_w / dx");
+  if (p.boundary_h_factor > p.h_factor * (1.0 + 1e-12))
+    m.fail("boundary_h_factor", "expected at most h_factor (the neighbour lists reach 2h)");
+  if (p.boundary_h_factor == p.h_factor) p.boundary_h_factor = 0.0;  // follows h
+  const double wall_h = p.boundary_h_factor > 0.0 ? p.boundary_h_factor : p.h_factor;
   p.boundary_offset = m.positive("b_off", p.boundary_offset, "wall offset in units of dx", true);
-  // The wall law acts out to r_perp = h - b_off dx (METHOD.md section 2): at larger h a
-  // larger offset keeps that reach, and the lattice start's distance, what it is at h = 1.2 dx.
-  if (p.boundary_offset >= p.h_factor - 0.25) {
+  // The wall law acts out to r_perp = h_w - b_off dx (METHOD.md section 2).
+  if (p.boundary_offset >= wall_h - 0.25) {
     char msg[160];
-    std::snprintf(msg, sizeof msg, "expected a wall offset below h_factor - 0.25 = %g dx (reference 0.5), got %g",
-                  p.h_factor - 0.25, p.boundary_offset);
+    std::snprintf(msg, sizeof msg, "expected a wall offset below h_w/dx - 0.25 = %g (reference 0.5), got %g",
+                  wall_h - 0.25, p.boundary_offset);
     m.fail("b_off", msg);
   }
   p.boundary_strength = m.positive("boundary_strength", p.boundary_strength, "wall force scale");
@@ -79,7 +83,8 @@ void readMethod(MapReader& top, SceneConfig& c) {
   const bool changed = m.has("particle_shifting") || m.has("h_factor") || m.has("cfl") || m.has("predictor_fraction") || m.has("xsph_form") ||
                        m.has("b_off") || m.has("density_diffusion") || m.has("force_dt_factor") || m.has("gamma") ||
                        m.has("xsph_eps") || m.has("viscosity_xi") || m.has("viscosity_beta_factor") ||
-                       m.has("boundary_strength") || m.has("skin_factor");
+                       m.has("boundary_strength") || m.has("skin_factor") ||
+                       m.has("boundary_h_factor");
   p.name = changed ? "reference+options" : "reference";
   m.finish();
 }

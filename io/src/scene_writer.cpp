@@ -61,6 +61,7 @@ std::string resolvedSceneYaml(const SceneConfig& c) {
   e << YAML::Key << "viscosity_beta_factor" << YAML::Value << m.viscosity_beta_factor;
   e << YAML::Key << "b_off" << YAML::Value << m.boundary_offset;
   e << YAML::Key << "boundary_strength" << YAML::Value << m.boundary_strength;
+  if (m.boundary_h_factor > 0.0) e << YAML::Key << "boundary_h_factor" << YAML::Value << m.boundary_h_factor;
   e << YAML::Key << "skin_factor" << YAML::Value << m.skin_factor;
   e << YAML::Key << "density_diffusion" << YAML::Value << YAML::BeginMap;
   e << YAML::Key << "form" << YAML::Value << densityDiffusionFormName(m.density_diffusion_form);

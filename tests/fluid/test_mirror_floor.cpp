@@ -10,7 +10,8 @@
 //    water 0.45 dx higher, docs/validation/wave-propagation.md), no particle goes below
 //    the floor, and the kinetic energy stays below 1e-4 of the weight times dx;
 //  - a uniform stream along the floor keeps its speed to 0.1% over 0.5 s and the row
-//    next to the floor moves with the rest (no boundary layer, nothing to slow it).
+//    next to the floor moves with the rest (no boundary layer, nothing to slow it);
+//  - a dam break with side walls: the floor holds and the energy does not grow.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -130,8 +131,11 @@ TEST(MirrorFloor, IsFreeSlip) {
 // floor, slams into the far wall's corner and falls back. The floor must hold (no
 // particle below it, however hard it is hit in the corner: MirrorFloorReflection) and
 // the total energy may only fall (kinetic + potential + elastic; nothing here adds
-// any). Side walls at h = 2 dx with b_off = 1.3: the wall law's reach, h - b_off dx =
-// 0.7 dx, is what it is at the reference h = 1.2 dx, b_off = 0.5.
+// any). Side walls at h = 2 dx with the wall law on the reference length
+// (boundary_h_factor 1.2, b_off 0.5: reach 0.7 dx): the front must not enter the far wall.
+// The largest energy gain measured is 0.9% of the peak kinetic energy, at the slam
+// (0.15% with a softer wall, b_off 1.3 on h): the stiff wall under the non-damping
+// midpoint predictor; the bound is 2%.
 TEST(MirrorFloor, HoldsADamBreakWithSideWalls) {
   TankSpec<2> spec;
   spec.size = Vec<2>(0.4, 0.3);
@@ -139,7 +143,7 @@ TEST(MirrorFloor, HoldsADamBreakWithSideWalls) {
   spec.dx = kDx / 2;
   spec.fluid.sound_speed = 10.0 * std::sqrt(2.0 * kG * 0.2);
   spec.fluid.method.h_factor = 2.0;
-  spec.fluid.method.boundary_offset = 1.3;
+  spec.fluid.method.boundary_h_factor = 1.2;
   spec.fluid.method.predictor_fraction = 0.5;
   spec.fluid.method.density_diffusion_form = DensityDiffusionForm::Renormalised;
   spec.fluid.effects = {"pressure", "viscosity", "density_diffusion", "gravity", "walls", "mirror_floor"};
@@ -163,6 +167,6 @@ TEST(MirrorFloor, HoldsADamBreakWithSideWalls) {
               "largest energy gain %.2e J/m (%.2e of the peak KE); lost %.3f J/m\n",
               front, ke_peak, e.kinetic, worst_gain, worst_gain / ke_peak, total0 - (e.kinetic + e.potential + e.elastic));
   EXPECT_GT(front, 0.39) << "the front did not reach the far wall";
-  EXPECT_LT(front, 0.4 + 0.5 * spec.dx) << "a particle went into the far wall";
-  EXPECT_LT(worst_gain, 0.01 * ke_peak);
+  EXPECT_LT(front, 0.4) << "a particle went into the far wall";
+  EXPECT_LT(worst_gain, 0.02 * ke_peak);
 }

@@ -398,6 +398,22 @@ geometry:
   EXPECT_NE(bad.find("s.yaml:9:"), std::string::npos) << bad;
 }
 
+// The wall law's own length: read, checked against h_factor and b_off, written back.
+TEST(SceneLoader, WallLawLength) {
+  const auto c = io::loadSceneText(std::string(kBase) + "method:\n  h_factor: 2\n  boundary_h_factor: 1.2\n", "s.yaml");
+  EXPECT_DOUBLE_EQ(c.method.boundary_h_factor, 1.2);
+  EXPECT_EQ(c.method.name, "reference+options");
+  const auto again = io::loadSceneText(io::resolvedSceneYaml(c), "resolved.yaml");
+  EXPECT_DOUBLE_EQ(again.method.boundary_h_factor, 1.2);
+  const auto same = io::loadSceneText(std::string(kBase) + "method:\n  boundary_h_factor: 1.2\n", "s.yaml");
+  EXPECT_EQ(same.method.boundary_h_factor, 0.0);  // equal to h_factor: follows h
+  const std::string longer = errorOf(std::string(kBase) + "method:\n  boundary_h_factor: 1.5\n");
+  EXPECT_NE(longer.find("'method.boundary_h_factor': expected at most h_factor"), std::string::npos) << longer;
+  const std::string past = errorOf(std::string(kBase) + "method:\n  h_factor: 2\n  boundary_h_factor: 1.2\n  b_off: 1.0\n");
+  EXPECT_NE(past.find("'method.b_off'"), std::string::npos) << past;
+  EXPECT_TRUE(errorOf(std::string(kBase) + "method:\n  h_factor: 2\n  b_off: 1.3\n").empty());
+}
+
 // A water block fills whole spacings: one whose size is not a multiple of dx stops short
 // of its upper face, and the built scene says where (check and run print it); a block of
 // whole spacings gets no note. Here 0.2 m at dx = 0.015 m is 13.33 spacings: 13 layers,

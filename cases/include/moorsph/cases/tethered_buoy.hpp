@@ -55,6 +55,8 @@ struct TetheredBuoyTank {
   double settling_damping = 0.0;
   double mu = 1.0e-3;        ///< dynamic viscosity [Pa s] (water)
   double b_off = 0.5;
+  double h_factor = 1.2;     ///< h / dx (METHOD.md reference 1.2)
+  double boundary_h_factor = 0.0;  ///< the wall law's h_w / dx; 0: h
   double cfl = 0.5;          ///< CFL number of the fluid step (METHOD.md reference 0.5)
   double sound_speed_factor = 10.0;  ///< c_s = factor sqrt(2 g depth) (METHOD.md: 10)
   double boundary_strength = 0.01;   ///< wall force scale (METHOD.md: 0.01)
@@ -91,6 +93,8 @@ inline TetheredBuoyScene buildTetheredBuoy(const TetheredBuoyTank& t) {
   spec.fluid.sound_speed = t.sound_speed_factor * std::sqrt(2.0 * b.g * t.depth);  // > 10x the buoy's ~1.3 m/s
   spec.fluid.mu = t.mu;
   spec.fluid.method.boundary_offset = t.b_off;
+  spec.fluid.method.h_factor = t.h_factor;
+  spec.fluid.method.boundary_h_factor = t.boundary_h_factor;
   spec.fluid.method.cfl = t.cfl;
   spec.fluid.method.density_diffusion_form = t.density_diffusion_form;
   spec.fluid.method.boundary_strength = t.boundary_strength;

@@ -47,7 +47,11 @@ struct MethodParameters {
   double viscosity_xi = 5.75;        ///< Cleary xi for the Wendland kernel
   double viscosity_beta_factor = 0.01;  ///< beta = factor * dx
   double boundary_offset = 0.5;      ///< b_off: distance pushed back into the wall, in dx
-  double boundary_strength = 0.01;   ///< wall force scale: strength c_s^2 m_i / h
+  double boundary_strength = 0.01;   ///< wall force scale: strength c_s^2 m_i / h_w
+  /// The wall law's length h_w = boundary_h_factor dx (METHOD.md section 2 uses the
+  /// kernel's h); 0: the kernel's h. With a larger kernel (h_factor 2) a wall law on
+  /// h_w = 1.2 dx keeps the reference's reach (0.7 dx) and stiffness.
+  double boundary_h_factor = 0.0;
   double density_diffusion_delta = 0.1;
   DensityDiffusionForm density_diffusion_form = DensityDiffusionForm::Fourtakas;
   ShiftingParameters shifting;      ///< used when the scene names particle_shifting
