@@ -26,6 +26,7 @@ run R_mirror_cfl25 dx=0.01 $R floor=mirror cfl=0.25
 run R_mirror_delta02 dx=0.01 $R floor=mirror dd_delta=0.2
 run R_mirror_delta005 dx=0.01 $R floor=mirror dd_delta=0.05
 run R_mirror_stokes2 dx=0.01 $R floor=mirror theory=stokes2
+run R_mirror_long dx=0.01 $R floor=mirror end=16   # 10 wavelengths travelled
 if [ "$3" = fine ]; then
   run R_mirror_fine dx=0.005 $R floor=mirror
 fi

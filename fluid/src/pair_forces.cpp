@@ -253,8 +253,10 @@ class PairForcesImpl final : public PairForces<D> {
 // per term, resolved once here.
 template <int D, bool Periodic, class V, class X, class Dd>
 std::unique_ptr<PairForces<D>> withFloor(const FluidSetup<D>& s, V v, X x, Dd d) {
-  if (s.has("mirror_floor"))
+  if (s.has("mirror_floor")) {
+    if (s.domain.periodic[1]) throw std::invalid_argument("mirror_floor: the domain must not be periodic along y");
     return std::make_unique<PairForcesImpl<D, Periodic, V, X, Dd, MirrorFloorTerm<D>>>(v, x, d, MirrorFloorTerm<D>(s));
+  }
   return std::make_unique<PairForcesImpl<D, Periodic, V, X, Dd, NoTerm>>(v, x, d, NoTerm{});
 }
 

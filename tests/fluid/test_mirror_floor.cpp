@@ -17,6 +17,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <stdexcept>
 #include <moorsph/fluid/box_geometry.hpp>
 #include <moorsph/fluid/fluid_simulation.hpp>
 #include <moorsph/fluid/tank_scene.hpp>
@@ -169,4 +170,18 @@ TEST(MirrorFloor, HoldsADamBreakWithSideWalls) {
   EXPECT_GT(front, 0.39) << "the front did not reach the far wall";
   EXPECT_LT(front, 0.4) << "a particle went into the far wall";
   EXPECT_LT(worst_gain, 0.02 * ke_peak);
+}
+
+// A floor has no meaning in a domain periodic along y: refused at construction.
+TEST(MirrorFloor, RefusesAPeriodicVertical) {
+  FluidSetup<2> s;
+  s.dx = kDx;
+  s.effects = {"pressure", "gravity", "mirror_floor"};
+  s.domain.lower = Vec<2>(0.0, 0.0);
+  s.domain.upper = Vec<2>(kWidth, kDepth);
+  s.domain.periodic = {true, true};
+  FluidParticles<2> water;
+  fillBox<2>(water, Vec<2>(0.0, 0.0), Vec<2>(kWidth, kDepth), kDx, TaitEos(s.rho0, s.sound_speed, s.method.gamma), 0.0,
+             kDepth);
+  EXPECT_THROW(FluidSimulation<2>(s, water, BoundaryGeometry<2>{}), std::invalid_argument);
 }
