@@ -80,9 +80,7 @@ cases::WaveTankFluid fluidOf(Args& a) {
   f.method.boundary_h_factor = a.get("boundary_h_factor", f.method.boundary_h_factor);
   f.method.density_diffusion_delta = a.get("dd_delta", f.method.density_diffusion_delta);
   const std::string dd_form = a.str("dd_form", "fourtakas");
-  if (dd_form == "renormalised") f.method.density_diffusion_form = fluid::DensityDiffusionForm::Renormalised;
-  else if (dd_form == "molteni_colagrossi") f.method.density_diffusion_form = fluid::DensityDiffusionForm::MolteniColagrossi;
-  else if (dd_form != "fourtakas") throw std::invalid_argument("dd_form: fourtakas, molteni_colagrossi or renormalised");
+  if (!fluid::densityDiffusionFormFromName(dd_form, f.method.density_diffusion_form)) throw std::invalid_argument("dd_form: fourtakas, molteni_colagrossi or renormalised");
   if (a.get("density_diffusion", 0.0) != 0.0) f.effects.push_back("density_diffusion");
   if (a.get("shifting", 0.0) != 0.0) f.effects.push_back("particle_shifting");
   f.method.shifting.coefficient = a.get("shifting_coefficient", f.method.shifting.coefficient);

@@ -68,10 +68,7 @@ void readMethod(MapReader& top, SceneConfig& c) {
     MapReader d(m.child("density_diffusion"), "method.density_diffusion", top.source());
     p.density_diffusion_delta = d.positive("delta", p.density_diffusion_delta, "delta-SPH coefficient");
     const std::string f = d.text("form", "fourtakas");
-    if (f == "fourtakas") p.density_diffusion_form = fluid::DensityDiffusionForm::Fourtakas;
-    else if (f == "molteni_colagrossi") p.density_diffusion_form = fluid::DensityDiffusionForm::MolteniColagrossi;
-    else if (f == "renormalised") p.density_diffusion_form = fluid::DensityDiffusionForm::Renormalised;
-    else d.fail("form", "expected 'fourtakas', 'molteni_colagrossi' or 'renormalised', got '" + f + "'");
+    if (!fluid::densityDiffusionFormFromName(f, p.density_diffusion_form)) d.fail("form", "expected 'fourtakas', 'molteni_colagrossi' or 'renormalised', got '" + f + "'");
     d.finish();
   } else {
     m.child("density_diffusion");

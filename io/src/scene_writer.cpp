@@ -17,15 +17,6 @@ void vec(YAML::Emitter& e, const char* key, const Triple& t, int dim) {
   e << YAML::EndSeq;
 }
 
-const char* densityDiffusionFormName(fluid::DensityDiffusionForm form) {
-  switch (form) {
-    case fluid::DensityDiffusionForm::Fourtakas: return "fourtakas";
-    case fluid::DensityDiffusionForm::MolteniColagrossi: return "molteni_colagrossi";
-    case fluid::DensityDiffusionForm::Renormalised: return "renormalised";
-  }
-  return "fourtakas";
-}
-
 void extent(YAML::Emitter& e, const BoxExtent& b, int dim) {
   vec(e, "lower", b.lower, dim);
   vec(e, "upper", b.upper, dim);
@@ -64,7 +55,7 @@ std::string resolvedSceneYaml(const SceneConfig& c) {
   if (m.boundary_h_factor > 0.0) e << YAML::Key << "boundary_h_factor" << YAML::Value << m.boundary_h_factor;
   e << YAML::Key << "skin_factor" << YAML::Value << m.skin_factor;
   e << YAML::Key << "density_diffusion" << YAML::Value << YAML::BeginMap;
-  e << YAML::Key << "form" << YAML::Value << densityDiffusionFormName(m.density_diffusion_form);
+  e << YAML::Key << "form" << YAML::Value << fluid::densityDiffusionFormName(m.density_diffusion_form);
   e << YAML::Key << "delta" << YAML::Value << m.density_diffusion_delta << YAML::EndMap;
   e << YAML::Key << "particle_shifting" << YAML::Value << YAML::BeginMap;
   e << YAML::Key << "coefficient" << YAML::Value << m.shifting.coefficient;

@@ -22,6 +22,33 @@ enum class DensityDiffusionForm {
   Renormalised,
 };
 
+/// The forms' names in scenes and runner keys: the one table the reader and writer share.
+struct DensityDiffusionFormName {
+  DensityDiffusionForm form;
+  const char* name;
+};
+inline constexpr DensityDiffusionFormName kDensityDiffusionFormNames[] = {
+    {DensityDiffusionForm::Fourtakas, "fourtakas"},
+    {DensityDiffusionForm::MolteniColagrossi, "molteni_colagrossi"},
+    {DensityDiffusionForm::Renormalised, "renormalised"},
+};
+
+inline const char* densityDiffusionFormName(DensityDiffusionForm form) {
+  for (const auto& f : kDensityDiffusionFormNames)
+    if (f.form == form) return f.name;
+  return "fourtakas";
+}
+
+/// False if `name` is none of the forms' names (then `form` is left as it was).
+inline bool densityDiffusionFormFromName(const std::string& name, DensityDiffusionForm& form) {
+  for (const auto& f : kDensityDiffusionFormNames)
+    if (name == f.name) {
+      form = f.form;
+      return true;
+    }
+  return false;
+}
+
 /// Particle shifting (the "particle_shifting" effect, particle_shifting.hpp).
 struct ShiftingParameters {
   double coefficient = 2.0;        ///< A in (1): Skillen et al. 2013
