@@ -27,6 +27,8 @@ run R_mirror_delta02 dx=0.01 $R floor=mirror dd_delta=0.2
 run R_mirror_delta005 dx=0.01 $R floor=mirror dd_delta=0.05
 run R_mirror_stokes2 dx=0.01 $R floor=mirror theory=stokes2
 run R_mirror_long dx=0.01 $R floor=mirror end=16   # 10 wavelengths travelled
+run R_mirror_half dx=0.01 $R floor=mirror amplitude=0.0125
+run R_mirror_deep dx=0.01 $R floor=mirror depth=0.5 period=0.8
 if [ "$3" = fine ]; then
   run R_mirror_fine dx=0.005 $R floor=mirror
 fi
