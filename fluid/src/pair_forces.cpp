@@ -24,6 +24,21 @@ class PairForcesImpl final : public PairForces<D> {
     double rho, m, p_over_rho2, inv_rho, volume;
     Vec<D> grad_rho;  ///< kRenormalised only
   };
+  /// What the pair terms need of the owner i of the sums.
+  struct Owner {
+    Vec<D> v;
+    double rho, p_over_rho2, inv_rho;
+    Vec<D> grad_rho;  ///< kRenormalised only
+  };
+  /// The kernel's constants for the pair loops: grad_i W_ij = grad_scale (2 - q)^3 r_ij.
+  struct KernelConstants {
+    double inv_h, support2, grad_scale, alpha;
+    explicit KernelConstants(const WendlandKernel<D>& k)
+        : inv_h(1.0 / k.h()),
+          support2(k.supportSquared()),
+          grad_scale(-10.0 * k.alpha() * inv_h * inv_h),
+          alpha(k.alpha()) {}
+  };
   /// The sums of particle i's rates.
   struct Sums {
     Vec<D> acc = Vec<D>::Zero();
@@ -107,14 +122,36 @@ class PairForcesImpl final : public PairForces<D> {
     return (f.r[i][1] - floor_.height) + (f.r[j][1] - floor_.height) < floor_.reach;
   }
 
+  /// Calls visit(nb) for every neighbour of i: each listed particle j and, with a
+  /// mirror floor, j's image and i's own. visit returns false when nb is out of reach;
+  /// j's image is then skipped, being farther still (both lie above the floor). Returns
+  /// the number of listed particles within reach.
+  template <class Visit>
+  std::uint32_t forEachNeighbour(const FluidParticles<D>& f, const NeighbourList& list, const Domain<D>& domain,
+                                 std::size_t i, Visit&& visit) const {
+    std::uint32_t count = 0;
+    for (std::uint64_t s = list.begin[i]; s < list.begin[i + 1]; ++s) {
+      const std::uint32_t j = list.index[s];
+      Vec<D> rij = f.r[i] - f.r[j];
+      if constexpr (Periodic) rij = domain.minimumImage(rij);
+      if (!visit(particle(f, j, rij))) continue;
+      ++count;
+      if constexpr (kMirror)
+        if (imageInReach(f, i, j)) visit(image(f, j, rij));
+    }
+    if constexpr (kMirror) {
+      const auto self = static_cast<std::uint32_t>(i);
+      if (imageInReach(f, i, self)) visit(image(f, self, Vec<D>::Zero()));
+    }
+    return count;
+  }
+
   /// G_i of RenormalisedDensityDiffusionTerm: the renormalised density gradient.
   void densityGradients(FluidContext<D>& ctx) {
     const FluidParticles<D>& f = ctx.fluid;
     const NeighbourList& list = ctx.neighbours.fluidFluid();
     const Domain<D> domain = ctx.setup.domain;
-    const double inv_h = 1.0 / ctx.kernel.h();
-    const double support2 = ctx.kernel.supportSquared();
-    const double grad_scale = -10.0 * ctx.kernel.alpha() * inv_h * inv_h;
+    const KernelConstants k(ctx.kernel);
     // det of sum_j V_j r_ji (x) grad_i W_ij on a full neighbourhood: ~1 (it is the
     // identity for an exact quadrature), so min_det is a fraction of one.
     const double min_det = diffusion_.min_det;
@@ -124,62 +161,45 @@ class PairForcesImpl final : public PairForces<D> {
     for (std::size_t i = 0; i < n; ++i) {
       Eigen::Matrix<double, D, D> moment = Eigen::Matrix<double, D, D>::Zero();
       Vec<D> sum = Vec<D>::Zero();
-      auto add = [&](const Vec<D>& rij, double rho_j, double volume_j) {
-        const double r2 = rij.squaredNorm();
-        if (r2 >= support2) return;
-        const double t = 2.0 - std::sqrt(r2) * inv_h;
-        const double F = grad_scale * t * t * t * volume_j;  // V_j grad_i W_ij = F r_ij
-        moment -= F * rij * rij.transpose();                 // r_ji (x) grad_i W_ij V_j
-        sum += (rho_j - f.rho[i]) * F * rij;
-      };
-      for (std::uint64_t s = list.begin[i]; s < list.begin[i + 1]; ++s) {
-        const std::uint32_t j = list.index[s];
-        Vec<D> rij = f.r[i] - f.r[j];
-        if constexpr (Periodic) rij = domain.minimumImage(rij);
-        add(rij, f.rho[j], volume_[j]);
-        if constexpr (kMirror)
-          if (imageInReach(f, i, j)) {
-            const Neighbour nb = image(f, j, rij);
-            add(nb.rij, nb.rho, nb.volume);
-          }
-      }
-      if constexpr (kMirror)
-        if (imageInReach(f, i, static_cast<std::uint32_t>(i))) {
-          const Neighbour self = image(f, static_cast<std::uint32_t>(i), Vec<D>::Zero());
-          add(self.rij, self.rho, self.volume);
-        }
+      forEachNeighbour(f, list, domain, i, [&](const Neighbour& nb) {
+        const double r2 = nb.rij.squaredNorm();
+        if (r2 >= k.support2) return false;
+        const double t = 2.0 - std::sqrt(r2) * k.inv_h;
+        const double F = k.grad_scale * t * t * t * nb.volume;  // V_j grad_i W_ij = F r_ij
+        moment -= F * nb.rij * nb.rij.transpose();              // r_ji (x) grad_i W_ij V_j
+        sum += (nb.rho - f.rho[i]) * F * nb.rij;
+        return true;
+      });
       grad_rho_[i] = moment.determinant() > min_det ? Vec<D>(moment.inverse() * sum) : diffusion_.hydrostatic;
     }
   }
 
   /// Adds neighbour nb's share of particle i's rates; false if nb is out of reach.
-  bool addPair(Sums& sums, const Vec<D>& vi, double rhoi, double p_over_rho2_i, double inv_rhoi, const Vec<D>& grad_rho_i,
-               const Neighbour& nb, double inv_h, double support2, double grad_scale, double alpha) const {
+  bool addPair(Sums& sums, const Owner& i, const Neighbour& nb, const KernelConstants& k) const {
     const Vec<D>& rij = nb.rij;
     const double r2 = rij.squaredNorm();
-    if (r2 >= support2) return false;
-    const double q = std::sqrt(r2) * inv_h;
+    if (r2 >= k.support2) return false;
+    const double q = std::sqrt(r2) * k.inv_h;
     const double t = 2.0 - q;
     const double t3 = t * t * t;
-    const double F = grad_scale * t3;  // grad_i W_ij = F r_ij
-    const Vec<D> vij = vi - nb.v;
+    const double F = k.grad_scale * t3;  // grad_i W_ij = F r_ij
+    const Vec<D> vij = i.v - nb.v;
     const double vr = vij.dot(rij);
     sums.drho += nb.m * vr * F;
-    double coef = p_over_rho2_i + nb.p_over_rho2;
-    if constexpr (kViscosity) coef -= viscosity_.xi_mu_eff * vr * inv_rhoi * nb.inv_rho / (r2 + viscosity_.beta2);
+    double coef = i.p_over_rho2 + nb.p_over_rho2;
+    if constexpr (kViscosity) coef -= viscosity_.xi_mu_eff * vr * i.inv_rho * nb.inv_rho / (r2 + viscosity_.beta2);
     sums.acc -= (nb.m * coef * F) * rij;
     if constexpr (kXsph) {
-      const double w = alpha * t3 * t * (1.0 + 2.0 * q) * nb.volume;
+      const double w = k.alpha * t3 * t * (1.0 + 2.0 * q) * nb.volume;
       sums.xsph += w * nb.v;
       sums.xsph_weight += w;
     }
     if constexpr (kDiffusion) {
-      double jump = rhoi - nb.rho;
-      if constexpr (kRenormalised) jump -= 0.5 * (grad_rho_i + nb.grad_rho).dot(rij);
+      double jump = i.rho - nb.rho;
+      if constexpr (kRenormalised) jump -= 0.5 * (i.grad_rho + nb.grad_rho).dot(rij);
       else jump -= diffusion_.hydrostatic.dot(rij);
       sums.drho += diffusion_.coefficient * jump * F * r2 / (r2 + diffusion_.eta2) * nb.volume;
     }
-    (void)grad_rho_i;
     return true;
   }
 
@@ -188,41 +208,18 @@ class PairForcesImpl final : public PairForces<D> {
     const NeighbourList& list = ctx.neighbours.fluidFluid();
     const Domain<D> domain = ctx.setup.domain;
     const WendlandKernel<D> kernel = ctx.kernel;
-    const double inv_h = 1.0 / kernel.h();
-    const double support2 = kernel.supportSquared();
-    const double grad_scale = -10.0 * kernel.alpha() * inv_h * inv_h;
-    const double alpha = kernel.alpha();
+    const KernelConstants k(kernel);
     const std::size_t n = f.size();
     std::uint64_t interactions = 0;
 
 #pragma omp parallel for schedule(static) reduction(+ : interactions)
     for (std::size_t i = 0; i < n; ++i) {
       const Vec<D> vi = f.v[i];
-      const double rhoi = f.rho[i];
-      const double p_over_rho2_i = p_over_rho2_[i];
-      const double inv_rhoi = inv_rho_[i];
-      const Vec<D> grad_rho_i = kRenormalised ? grad_rho_[i] : Vec<D>(Vec<D>::Zero());
+      const Owner owner{vi, f.rho[i], p_over_rho2_[i], inv_rho_[i],
+                        kRenormalised ? grad_rho_[i] : Vec<D>(Vec<D>::Zero())};
       Sums sums;
-      std::uint32_t count = 0;
-      for (std::uint64_t s = list.begin[i]; s < list.begin[i + 1]; ++s) {
-        const std::uint32_t j = list.index[s];
-        Vec<D> rij = f.r[i] - f.r[j];
-        if constexpr (Periodic) rij = domain.minimumImage(rij);
-        if (!addPair(sums, vi, rhoi, p_over_rho2_i, inv_rhoi, grad_rho_i, particle(f, j, rij), inv_h,
-                     support2, grad_scale, alpha))
-          continue;  // the image is farther still
-        ++count;
-        if constexpr (kMirror)
-          if (imageInReach(f, i, j))
-            addPair(sums, vi, rhoi, p_over_rho2_i, inv_rhoi, grad_rho_i, image(f, j, rij), inv_h, support2,
-                    grad_scale, alpha);
-      }
-      if constexpr (kMirror)
-        if (imageInReach(f, i, static_cast<std::uint32_t>(i)))
-          addPair(sums, vi, rhoi, p_over_rho2_i, inv_rhoi, grad_rho_i,
-                  image(f, static_cast<std::uint32_t>(i), Vec<D>::Zero()), inv_h, support2, grad_scale,
-                  alpha);
-      interactions += count;
+      interactions += forEachNeighbour(f, list, domain, i,
+                                       [&](const Neighbour& nb) { return addPair(sums, owner, nb, k); });
       f.dvdt[i] = sums.acc;
       f.drhodt[i] = sums.drho;
       if constexpr (kXsph) {

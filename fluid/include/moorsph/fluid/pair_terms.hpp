@@ -78,8 +78,9 @@ struct RenormalisedDensityDiffusionTerm : Counted<RenormalisedDensityDiffusionTe
 /// continued hydrostatically, P_j' = P_j + 2 rho0 |g| (y_j - height), so that the
 /// still water's pressure gradient carries on through the floor. The images complete
 /// the kernel: particles near the floor see a full neighbourhood in the pressure,
-/// continuity, diffusion and XSPH sums, where the "walls" force only pushes. Used with
-/// flat floors only (the periodic wave tank); walls remain boundary particles.
+/// continuity, diffusion and XSPH sums, where the "walls" force only pushes. One flat
+/// horizontal floor per scene (a tank's `floor: mirror`, the periodic wave tank's
+/// `floor=mirror`); side walls, pistons and bodies remain boundary particles.
 template <int D>
 struct MirrorFloorTerm : Counted<MirrorFloorTerm<D>> {
   double height;           ///< the floor plane's y [m]
