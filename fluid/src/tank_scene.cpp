@@ -29,12 +29,9 @@ Scene<D> buildTankScene(const TankSpec<D>& spec) {
   const double g = spec.hydrostatic_start ? -scene.setup.gravity[1] : 0.0;
   fillBox<D>(scene.fluid, spec.water_lower, spec.water_upper, spec.dx, eos, g, spec.water_upper[1]);
 
-  BoxFaces<D> faces = allFaces<D>();
-  if (!spec.lid) faces = openTopTank<D>();
-  if (scene.setup.has("mirror_floor")) {  // the images close the floor: no -y face
-    faces[2 * 1] = false;
-    scene.setup.mirror_floor_height = 0.0;
-  }
+  const bool mirror_floor = scene.setup.has("mirror_floor");
+  const BoxFaces<D> faces = tankFaces<D>(spec.lid, mirror_floor);
+  if (mirror_floor) scene.setup.mirror_floor_height = 0.0;  // the images close the floor
   scene.boundary.addSurface(sampleBoxSurface<D>(Vec<D>::Zero(), spec.size, spacing, faces, NormalSide::Inward),
                             SurfaceInfo{"tank", false});
   return scene;

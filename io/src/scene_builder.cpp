@@ -197,11 +197,8 @@ BuiltScene<D> buildScene(const SceneConfig& c) {
   std::vector<double> mesh_tiles;         // per surface: sqrt(area per particle) of meshes [m]
   MeshExclusion near_mesh;
   for (const auto& t : c.tanks) {
-    fluid::BoxFaces<D> faces = t.lid ? fluid::allFaces<D>() : fluid::openTopTank<D>();
-    if (t.mirror_floor) {
-      faces[2 * 1] = false;  // the -y face: the mirror_floor effect's plane instead
-      scene.setup.mirror_floor_height = t.box.lower[1];
-    }
+    const fluid::BoxFaces<D> faces = fluid::tankFaces<D>(t.lid, t.mirror_floor);
+    if (t.mirror_floor) scene.setup.mirror_floor_height = t.box.lower[1];  // its plane replaces the -y face
     scene.boundary.addSurface(withoutPeriodicImages<D>(fluid::sampleBoxSurface<D>(toVec<D>(t.box.lower), toVec<D>(t.box.upper),
                                                                                   spacing, faces, fluid::NormalSide::Inward),
                                                        scene.setup.domain, spacing),

@@ -27,6 +27,15 @@ BoxFaces<D> openTopTank() {
   return f;
 }
 
+/// A box tank's faces: open at the top unless it has a lid, and without its floor
+/// (-y) face when the mirror_floor effect's plane takes its place.
+template <int D>
+BoxFaces<D> tankFaces(bool lid, bool mirror_floor) {
+  BoxFaces<D> f = lid ? allFaces<D>() : openTopTank<D>();
+  if (mirror_floor) f[2 * 1] = false;
+  return f;
+}
+
 enum class NormalSide { Inward, Outward };
 
 /// Boundary particles on the present faces of the box [lower, upper], on a lattice

@@ -21,22 +21,16 @@ class MirrorFloorReflection final : public FluidEffect<D>, public Counted<Mirror
   void addRates(FluidContext<D>&) override {}
   void constrain(FluidParticles<D>& f) override {
     const std::size_t n = f.size();
-    std::size_t reflected = 0;
-#pragma omp parallel for schedule(static) reduction(+ : reflected)
+#pragma omp parallel for schedule(static)
     for (std::size_t i = 0; i < n; ++i) {
       if (f.r[i][1] >= height_) continue;
       f.r[i][1] = 2.0 * height_ - f.r[i][1];
       f.v[i][1] = -f.v[i][1];
-      ++reflected;
     }
-    reflections_ += reflected;
   }
-  /// Particles reflected since the start (a measure of how hard the floor is pressed).
-  std::size_t reflections() const { return reflections_; }
 
  private:
   double height_;
-  std::size_t reflections_ = 0;
 };
 
 }  // namespace moorsph::fluid
