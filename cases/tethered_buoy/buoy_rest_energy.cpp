@@ -17,6 +17,7 @@
 //                                 [1: renormalised density diffusion (delta-SPH)]
 //                                 [1: mirror floor (the mirror_floor effect)]
 //                                 [h / dx] [b_off] [wall law h_w / dx]
+//                                 [1: conservative wall law (method.boundary_force)]
 // A release time past the end holds the buoy throughout (the fluid alone).
 #include <cmath>
 #include <cstdio>
@@ -83,6 +84,7 @@ int main(int argc, char** argv) {
   tank.h_factor = argOr(argc, argv, 10, tank.h_factor);
   tank.b_off = argOr(argc, argv, 11, tank.b_off);
   tank.boundary_h_factor = argOr(argc, argv, 12, tank.boundary_h_factor);
+  if (argOr(argc, argv, 13, 0.0) != 0.0) tank.boundary_force = fluid::BoundaryForceForm::Conservative;
   auto scene = cases::buildTetheredBuoy(tank);
   auto& co = *scene.co;
   const std::vector<Eigen::Vector3d> r0 = startPositions(co.fluid().fluid());

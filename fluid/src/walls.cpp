@@ -20,12 +20,21 @@ double wallLength(const FluidSetup<D>& s) {
   return h_w;
 }
 
+/// A D-vector in 3D (zero z in 2D), for moments.
+template <int D>
+Eigen::Vector3d to3(const Vec<D>& v) {
+  Eigen::Vector3d out = Eigen::Vector3d::Zero();
+  out.template head<D>() = v;
+  return out;
+}
+
 }  // namespace
 
 template <int D>
 Walls<D>::Walls(BoundaryGeometry<D> geometry, const FluidSetup<D>& setup)
     : geometry_(std::move(geometry)),
-      law_(setup.method.boundary_strength, setup.sound_speed, wallLength(setup), setup.dx, setup.method.boundary_offset) {
+      law_(setup.method.boundary_strength, setup.sound_speed, wallLength(setup), setup.dx, setup.method.boundary_offset,
+           setup.method.boundary_force_form == BoundaryForceForm::Conservative) {
   if (geometry_.empty()) throw std::invalid_argument("effects: 'walls' is named but the scene has no boundary surfaces");
   tracked_.assign(geometry_.particles.size(), 0);
   for (std::size_t k = 0; k < tracked_.size(); ++k) {
@@ -180,15 +189,21 @@ void Walls<D>::addReactions(FluidContext<D>& ctx) {
   const Domain<D> domain = ctx.setup.domain;
   BoundaryParticles<D>& b = geometry_.particles;
   const std::size_t n = tracked.size();
+  const bool couples = law_.conservative();
+  if (couples) couples_.resize(b.size(), Eigen::Vector3d::Zero());
 #pragma omp parallel for schedule(static)
   for (std::size_t t = 0; t < n; ++t) {
     const std::uint32_t k = tracked[t];
     Vec<D> force = Vec<D>::Zero();
+    Eigen::Vector3d couple = Eigen::Vector3d::Zero();
     for (std::uint64_t s = list.begin[t]; s < list.begin[t + 1]; ++s) {
       const std::uint32_t i = list.index[s];
-      force -= f.m[i] * push(ctx, domain, i, k);
+      const Vec<D> reaction = -f.m[i] * push(ctx, domain, i, k);
+      force += reaction;
+      if (couples) couple += to3(domain.minimumImage(f.r[i] - b.r[k])).cross(to3(reaction));
     }
     b.reaction[k] = force;
+    if (couples) couples_[k] = couple;
   }
 }
 
@@ -199,12 +214,10 @@ SurfaceWrench Walls<D>::calcSurfaceWrench(std::size_t surface, const Vec<D>& poi
   const auto [first, last] = ranges_.at(surface);  // a surface is one contiguous range
   for (std::size_t k = first; k < last; ++k) {
     if (!tracked_[k]) continue;
-    Eigen::Vector3d f = Eigen::Vector3d::Zero();
-    Eigen::Vector3d arm = Eigen::Vector3d::Zero();
-    f.template head<D>() = b.reaction[k];
-    arm.template head<D>() = b.r[k] - point;
+    const Eigen::Vector3d f = to3(b.reaction[k]);
     w.force += f;
-    w.torque += arm.cross(f);
+    w.torque += to3(Vec<D>(b.r[k] - point)).cross(f);
+    if (!couples_.empty()) w.torque += couples_[k];
   }
   return w;
 }

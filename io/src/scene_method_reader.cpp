@@ -63,6 +63,10 @@ void readMethod(MapReader& top, SceneConfig& c) {
     m.fail("b_off", msg);
   }
   p.boundary_strength = m.positive("boundary_strength", p.boundary_strength, "wall force scale");
+  const std::string wall_law = m.text("boundary_force", "reference");
+  if (wall_law == "reference") p.boundary_force_form = fluid::BoundaryForceForm::Reference;
+  else if (wall_law == "conservative") p.boundary_force_form = fluid::BoundaryForceForm::Conservative;
+  else m.fail("boundary_force", "expected 'reference' or 'conservative', got '" + wall_law + "'");
   p.skin_factor = m.positive("skin_factor", p.skin_factor, "Verlet skin / 2h");
   if (m.has("density_diffusion")) {
     MapReader d(m.child("density_diffusion"), "method.density_diffusion", top.source());
@@ -81,7 +85,7 @@ void readMethod(MapReader& top, SceneConfig& c) {
                        m.has("b_off") || m.has("density_diffusion") || m.has("force_dt_factor") || m.has("gamma") ||
                        m.has("xsph_eps") || m.has("viscosity_xi") || m.has("viscosity_beta_factor") ||
                        m.has("boundary_strength") || m.has("skin_factor") ||
-                       m.has("boundary_h_factor");
+                       m.has("boundary_h_factor") || m.has("boundary_force");
   p.name = changed ? "reference+options" : "reference";
   m.finish();
 }

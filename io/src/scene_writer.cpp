@@ -53,6 +53,8 @@ std::string resolvedSceneYaml(const SceneConfig& c) {
   e << YAML::Key << "b_off" << YAML::Value << m.boundary_offset;
   e << YAML::Key << "boundary_strength" << YAML::Value << m.boundary_strength;
   if (m.boundary_h_factor > 0.0) e << YAML::Key << "boundary_h_factor" << YAML::Value << m.boundary_h_factor;
+  e << YAML::Key << "boundary_force" << YAML::Value
+    << (m.boundary_force_form == fluid::BoundaryForceForm::Conservative ? "conservative" : "reference");
   e << YAML::Key << "skin_factor" << YAML::Value << m.skin_factor;
   e << YAML::Key << "density_diffusion" << YAML::Value << YAML::BeginMap;
   e << YAML::Key << "form" << YAML::Value << fluid::densityDiffusionFormName(m.density_diffusion_form);

@@ -130,3 +130,88 @@ TEST(BoundaryForceLaw, BeyondAnEdgeThePushIsCancelled) {
   // Out of range (beyond 2h) the other particle does not count.
   EXPECT_FALSE(cancelled(pair({0, 0.1}, up, {3.0, -0.1}, down), {0.2, -0.35}));
 }
+
+namespace {
+
+/// A flat 3D wall patch: boundary particles on a square lattice of spacing dx in the
+/// plane y = 0, normals +y, (2 n + 1)^2 of them centred on the origin.
+fl::BoundaryParticles<3> latticeWall(int n) {
+  fl::BoundaryParticles<3> b;
+  for (int i = -n; i <= n; ++i)
+    for (int k = -n; k <= n; ++k) b.add(fl::Vec<3>(i * kDx, 0.0, k * kDx), {fl::Vec<3>(0.0, 1.0, 0.0)}, 0);
+  return b;
+}
+
+fl::Vec<3> wallAcceleration(const fl::BoundaryForceLaw<3>& law, const fl::BoundaryParticles<3>& b, const fl::Vec<3>& r) {
+  fl::Vec<3> a = fl::Vec<3>::Zero();
+  for (std::size_t k = 0; k < b.size(); ++k) a += law.acceleration(r - b.r[k], b, k);
+  return a;
+}
+
+/// Work per unit mass of the wall force around a rectangle in the x-y plane at z, from
+/// (x0, y0) to (x1, y1) [in dx], by Simpson's rule on each side.
+double loopWork(const fl::BoundaryForceLaw<3>& law, const fl::BoundaryParticles<3>& b, double x0, double y0,
+                double x1, double y1, double z) {
+  const fl::Vec<3> corner[5] = {{x0, y0, z}, {x1, y0, z}, {x1, y1, z}, {x0, y1, z}, {x0, y0, z}};
+  const int n = 20000;  // intervals per side (even); the along-wall part jumps where |r_par| = dx
+  double work = 0.0;
+  for (int s = 0; s < 4; ++s) {
+    const fl::Vec<3> p = corner[s] * kDx, d = (corner[s + 1] - corner[s]) * kDx;
+    double side = 0.0;
+    for (int i = 0; i <= n; ++i) {
+      const double w = (i == 0 || i == n) ? 1.0 : (i % 2 ? 4.0 : 2.0);
+      side += w * wallAcceleration(law, b, p + (double(i) / n) * d).dot(d);
+    }
+    work += side / (3.0 * n);
+  }
+  return work;
+}
+
+}  // namespace
+
+// The reference law pushes along n_k with a size that depends on the position along the
+// wall (B), so it is not the gradient of a potential: round a closed path in front of a
+// 3D lattice wall a fluid particle gains or loses work. The conservative form
+// (boundary_force_law.hpp) is minus the gradient of strength c^2 B(r_par) Psi(q), so the
+// same path gives no work (to the quadrature error), and its normal part is the reference
+// law's.
+TEST(BoundaryForceLaw, ConservativeFormDoesNoWorkRoundAClosedPath) {
+  const fl::BoundaryForceLaw<3> reference(kStrength, kC, kH, kDx, kOffset);
+  const fl::BoundaryForceLaw<3> conservative(kStrength, kC, kH, kDx, kOffset, true);
+  const auto wall = latticeWall(3);
+  // The path crosses from over a wall particle to between four and spans the force's
+  // range in depth (0.15 dx to 0.6 dx from the wall; the law reaches 0.7 dx).
+  const double ref = loopWork(reference, wall, 0.0, 0.15, 0.5, 0.6, 0.3);
+  const double con = loopWork(conservative, wall, 0.0, 0.15, 0.5, 0.6, 0.3);
+  // Scale: the work of the push from 0.6 dx in to 0.15 dx on the normal.
+  const double scale = std::abs(loopWork(reference, wall, 0.0, 0.15, 1e-9, 0.6, 0.3)) +
+                       reference.acceleration(fl::Vec<3>(0, 0.15 * kDx, 0), wall, 24).y() * 0.45 * kDx;
+  std::printf("closed-path work per unit mass: reference %.3e, conservative %.3e, scale %.3e [m^2/s^2]\n", ref, con,
+              scale);
+  EXPECT_GT(std::abs(ref), 1e-3 * scale);
+  EXPECT_LT(std::abs(con), 1e-6 * scale);
+  // Same normal push, and the along-wall part vanishes straight over a particle.
+  const fl::Vec<3> r(0.2 * kDx, 0.3 * kDx, 0.1 * kDx);
+  EXPECT_NEAR(conservative.acceleration(r, wall, 0).y(), reference.acceleration(r, wall, 0).y(), 1e-12);
+  EXPECT_EQ(conservative.acceleration(fl::Vec<3>(0, 0.3 * kDx, 0), wall, 0).x(), 0.0);
+}
+
+// Along a flat 2D wall the B of the particles a fluid particle sees sum to one wherever it
+// is, so the conservative form's along-wall parts cancel: the wall stays frictionless.
+TEST(BoundaryForceLaw, ConservativeFormIsFrictionlessAlongAFlat2DWall) {
+  const fl::BoundaryForceLaw<2> law(kStrength, kC, kH, kDx, kOffset, true);
+  fl::BoundaryParticles<2> b;
+  for (int i = -4; i <= 4; ++i) b.add(fl::Vec<2>(i * kDx, 0.0), {fl::Vec<2>(0.0, 1.0)}, 0);
+  for (double x : {0.13, 0.37, 0.5}) {
+    const fl::Vec<2> r(x * kDx, 0.35 * kDx);
+    fl::Vec<2> a = fl::Vec<2>::Zero();
+    double along = 0.0;  // the largest single along-wall push, for scale
+    for (std::size_t k = 0; k < b.size(); ++k) {
+      const fl::Vec<2> ak = law.acceleration(r - b.r[k], b, k);
+      a += ak;
+      along = std::max(along, std::abs(ak.x()));
+    }
+    EXPECT_GT(along, 0.0);
+    EXPECT_LT(std::abs(a.x()), 1e-9 * along) << "x = " << x << " dx";
+  }
+}

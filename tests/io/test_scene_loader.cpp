@@ -414,6 +414,19 @@ TEST(SceneLoader, WallLawLength) {
   EXPECT_TRUE(errorOf(std::string(kBase) + "method:\n  h_factor: 2\n  b_off: 1.3\n").empty());
 }
 
+// The wall law's form: reference by default, conservative on request, written back, and
+// a misspelt form names the key and its line.
+TEST(SceneLoader, WallLawForm) {
+  EXPECT_EQ(io::loadSceneText(kBase, "s.yaml").method.boundary_force_form, fluid::BoundaryForceForm::Reference);
+  const auto c = io::loadSceneText(std::string(kBase) + "method:\n  boundary_force: conservative\n", "s.yaml");
+  EXPECT_EQ(c.method.boundary_force_form, fluid::BoundaryForceForm::Conservative);
+  EXPECT_EQ(c.method.name, "reference+options");
+  const auto again = io::loadSceneText(io::resolvedSceneYaml(c), "resolved.yaml");
+  EXPECT_EQ(again.method.boundary_force_form, fluid::BoundaryForceForm::Conservative);
+  const std::string bad = errorOf(std::string(kBase) + "method:\n  boundary_force: gradient\n");
+  EXPECT_NE(bad.find("'method.boundary_force': expected 'reference' or 'conservative'"), std::string::npos) << bad;
+}
+
 // A water block fills whole spacings: one whose size is not a multiple of dx stops short
 // of its upper face, and the built scene says where (check and run print it); a block of
 // whole spacings gets no note. Here 0.2 m at dx = 0.015 m is 13.33 spacings: 13 layers,

@@ -57,6 +57,9 @@ struct TetheredBuoyTank {
   double b_off = 0.5;
   double h_factor = 1.2;     ///< h / dx (METHOD.md reference 1.2)
   double boundary_h_factor = 0.0;  ///< the wall law's h_w / dx; 0: h
+  /// The wall law: METHOD.md's (Reference) or its conservative form, which keeps the
+  /// free buoy from the wall law's flutter (fluid/boundary_force_law.hpp).
+  fluid::BoundaryForceForm boundary_force = fluid::BoundaryForceForm::Reference;
   double cfl = 0.5;          ///< CFL number of the fluid step (METHOD.md reference 0.5)
   double sound_speed_factor = 10.0;  ///< c_s = factor sqrt(2 g depth) (METHOD.md: 10)
   double boundary_strength = 0.01;   ///< wall force scale (METHOD.md: 0.01)
@@ -95,6 +98,7 @@ inline TetheredBuoyScene buildTetheredBuoy(const TetheredBuoyTank& t) {
   spec.fluid.method.boundary_offset = t.b_off;
   spec.fluid.method.h_factor = t.h_factor;
   spec.fluid.method.boundary_h_factor = t.boundary_h_factor;
+  spec.fluid.method.boundary_force_form = t.boundary_force;
   spec.fluid.method.cfl = t.cfl;
   spec.fluid.method.density_diffusion_form = t.density_diffusion_form;
   spec.fluid.method.boundary_strength = t.boundary_strength;

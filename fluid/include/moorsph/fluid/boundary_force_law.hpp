@@ -40,8 +40,25 @@
 // The boundary particle feels -F_ik: walls() sums these reactions for the wrench on a
 // body and for pressure sensors. The same function is evaluated on both sides, so
 // action and reaction are equal to the last bit.
+//
+// Conservative form (method.boundary_force: conservative). The law above pushes along
+// n_k only, but its size depends on r_par through B: it is not the gradient of any
+// potential, so a fluid particle taken round a closed path near the wall (in at one
+// r_par, out at another) gains or loses work. Coupled to a free body this is a
+// circulatory (non-symmetric) stiffness, the classic cause of flutter: the tethered lab
+// buoy at rest swayed and rocked with an amplitude growing ~e^(7 t) from round-off
+// (docs/validation/tethered-buoy.md). The conservative form is minus the gradient of
+//   Phi_ik / m_i = strength c_s^2 B(r_par) Psi(q),   Psi(q) = int_q^1 S(q') dq',
+// whose normal part is the law above (dPsi/dr_perp = -S/h) and whose part along the
+// wall, strength c_s^2 (Psi / dx) r_par/|r_par|, pushes the fluid particle away from k
+// along the wall (about a tenth of the normal push; it sums to zero along a flat 2D
+// wall, where the B sum to one). Behind the plane, where the
+// push is held, Psi continues linearly. The body then takes each reaction's moment at
+// the fluid particle (walls.cpp), the torque that conserves the pair's angular momentum
+// and so the energy of a rotating body.
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <moorsph/fluid/boundary_particles.hpp>
 
 namespace moorsph::fluid {
@@ -49,9 +66,12 @@ namespace moorsph::fluid {
 template <int D>
 class BoundaryForceLaw {
  public:
-  BoundaryForceLaw(double strength, double sound_speed, double h, double dx, double b_off)
+  BoundaryForceLaw(double strength, double sound_speed, double h, double dx, double b_off,
+                   bool conservative = false)
       : scale_(strength * sound_speed * sound_speed / h), inv_h_(1.0 / h), dx_(dx), inv_dx_(1.0 / dx),
-        offset_(b_off * dx) {}
+        offset_(b_off * dx), conservative_(conservative) {}
+
+  bool conservative() const { return conservative_; }
 
   /// S(q) of METHOD.md section 2.
   static double shape(double q) {
@@ -64,6 +84,18 @@ class BoundaryForceLaw {
     }
     const double b = q - 1.0;
     return 25.0 * b * b;
+  }
+
+  /// Psi(q) = int_q^1 S(q') dq', the potential of the conservative form.
+  static double potential(double q) {
+    if (q <= 0.0) return std::numeric_limits<double>::infinity();
+    if (q >= 1.0) return 0.0;
+    const double b = 1.0 - q;
+    const double above = 25.0 / 3.0 * b * b * b;  // int_max(q,0.8)^1 25 (q'-1)^2
+    if (q >= 0.8) return above;
+    const double a = 0.8 / q;  // int_q^0.8 (0.8/q')^8 = (0.8/7) ((0.8/q)^7 - 1)
+    const double a7 = a * a * a * a * a * a * a;
+    return 25.0 / 3.0 * 0.008 + 0.8 / 7.0 * (a7 - 1.0);
   }
 
   /// Acceleration of fluid particle i due to boundary particle k, r_ik = r_i - r_k.
@@ -101,8 +133,9 @@ class BoundaryForceLaw {
     if (s == 0.0 || dist == 0.0) return Vec<D>::Zero();
     const double par2 = (r_ik - r_perp).squaredNorm();
     if (par2 >= dx_ * dx_) return Vec<D>::Zero();
-    const double B = 1.0 - std::sqrt(par2) * inv_dx_;
-    return (scale_ * B * s / dist) * r_perp;
+    const double par = std::sqrt(par2);
+    const double B = 1.0 - par * inv_dx_;
+    return (scale_ * B * s / dist) * r_perp + alongWall(r_ik - r_perp, par, dist);
   }
 
   /// How the face of a single-normal particle (normal n) meets a face of another
@@ -161,8 +194,20 @@ class BoundaryForceLaw {
     if (s == 0.0) return Vec<D>::Zero();
     const double par2 = r_ik.squaredNorm() - perp * perp;
     if (par2 >= dx_ * dx_) return Vec<D>::Zero();
-    const double B = 1.0 - std::sqrt(std::max(par2, 0.0)) * inv_dx_;
-    return (scale_ * B * s) * n;
+    const double par = std::sqrt(std::max(par2, 0.0));
+    const double B = 1.0 - par * inv_dx_;
+    return (scale_ * B * s) * n + alongWall(r_ik - perp * n, par, perp);
+  }
+
+  /// The conservative form's part along the wall, -scale h Psi grad B, for the
+  /// part r_par of r_ik along the wall (length par) at normal distance perp; zero for
+  /// the reference form. Behind the plane (perp < 0) Psi continues linearly, matching
+  /// the held push.
+  Vec<D> alongWall(const Vec<D>& r_par, double par, double perp) const {
+    if (!conservative_ || par < 1e-9 * dx_) return Vec<D>::Zero();
+    const double q0 = offset_ * inv_h_;
+    const double psi = perp >= 0.0 ? potential((perp + offset_) * inv_h_) : potential(q0) - shape(q0) * perp * inv_h_;
+    return (scale_ * psi / (inv_h_ * dx_ * par)) * r_par;
   }
 
   double scale_;
@@ -170,6 +215,7 @@ class BoundaryForceLaw {
   double dx_;
   double inv_dx_;
   double offset_;
+  bool conservative_;
 };
 
 }  // namespace moorsph::fluid

@@ -49,6 +49,18 @@ inline bool densityDiffusionFormFromName(const std::string& name, DensityDiffusi
   return false;
 }
 
+/// The wall law of boundary_force_law.hpp.
+enum class BoundaryForceForm {
+  /// METHOD.md section 2: each boundary particle pushes along its normal only.
+  Reference,
+  /// Minus the gradient of the law's potential B(r_par) Psi(q): adds a part along the
+  /// wall, so the wall force does no net work around a closed path, and bodies take
+  /// the reactions' moments at the fluid particles (angular momentum kept). The
+  /// reference law's normal-only push is not a gradient; on a free body it fed a
+  /// growing sway (docs/validation/tethered-buoy.md, "A flutter of the wall law").
+  Conservative,
+};
+
 /// Particle shifting (the "particle_shifting" effect, particle_shifting.hpp).
 struct ShiftingParameters {
   double coefficient = 2.0;        ///< A in (1): Skillen et al. 2013
@@ -79,6 +91,7 @@ struct MethodParameters {
   /// kernel's h); 0: the kernel's h. With a larger kernel (h_factor 2) a wall law on
   /// h_w = 1.2 dx keeps the reference's reach (0.7 dx) and stiffness.
   double boundary_h_factor = 0.0;
+  BoundaryForceForm boundary_force_form = BoundaryForceForm::Reference;
   double density_diffusion_delta = 0.1;
   DensityDiffusionForm density_diffusion_form = DensityDiffusionForm::Fourtakas;
   ShiftingParameters shifting;      ///< used when the scene names particle_shifting

@@ -51,7 +51,9 @@ class Walls final : public FluidEffect<D>, public Counted<Walls<D>> {
   const std::vector<char>& trackedMask() const { return tracked_; }
   const BoundaryForceLaw<D>& law() const { return law_; }
 
-  /// Sum of the reactions of `surface` and their moments about `point` (tracked surfaces only).
+  /// Sum of the reactions of `surface` and their moments about `point` (tracked surfaces
+  /// only). The moments are taken at the boundary particles; with the conservative wall
+  /// law at the fluid particles (the torque that keeps the pair's angular momentum).
   SurfaceWrench calcSurfaceWrench(std::size_t surface, const Vec<D>& point) const;
 
   /// Place a movable surface: every particle is rebuilt from its body-frame reference
@@ -97,6 +99,9 @@ class Walls final : public FluidEffect<D>, public Counted<Walls<D>> {
   BoundaryForceLaw<D> law_;
   std::vector<char> tracked_;
   bool any_tracked_ = false;
+  /// Conservative law only: per tracked boundary particle k, sum_i r_ik x (-F_ik), which
+  /// moves each reaction's moment from r_k to the fluid particle r_i.
+  std::vector<Eigen::Vector3d> couples_;
   /// Per boundary particle: one normal, and a particle of its own surface within 4h
   /// meets its face convexly or back to back (BoundaryForceLaw::meeting), so the
   /// beyond-edge test can apply. Rigid motion keeps it; tanks and flat stretches skip it.
