@@ -60,29 +60,27 @@ int main(int argc, char** argv) {
     const double tf = number(a, "focus-time"), depth = number(a, "depth"), still = number(a, "still", 0.0);
     const double ramp = number(a, "ramp"), duration = number(a, "duration"), dt = number(a, "dt", 0.1);
     const auto out = a.count("out") ? a.at("out") : std::string("signal.csv");
-    if (!(still >= 0.0 && still + ramp < tf && tf < duration)) {
-      throw std::invalid_argument("need 0 <= still, still + ramp < focus-time < duration");
-    }
+    BreatherMakerSpec spec;
+    spec.order = order;
+    spec.a0 = a0;
+    spec.k0 = k0;
+    spec.focusDistance = xf;
+    spec.focusTime = tf;
+    spec.depth = depth;
+    spec.still = still;
+    spec.ramp = ramp;
+    spec.duration = duration;
+    spec.dt = dt;
+    const UniformSeries x = breatherMakerSignal(spec);
     const PeregrineBreather breather(order, a0, k0);
-    const double f0 = breather.carrierAngularFrequency() / (2.0 * M_PI);
-    PistonFilterOptions filter;
-    filter.lowCutoffFrequency = 0.5 * f0;
-    filter.lowTaperWidth = 0.25 * f0;
-    filter.rampUpTime = ramp;
-    // Built from the end of the still phase: the record's time tau = t - still.
-    const UniformSeries x = breatherPistonSignal(breather, xf, tf - still, depth, duration - still, dt, filter);
 
     std::ofstream f(out);
     if (!f) throw std::runtime_error("cannot write " + out);
     f << "t [s],X [m]\n";
     char line[64];
     double xmax = 0.0;
-    for (double t = 0.0; t < still - 1e-9; t += dt) {  // at rest before the waves
-      std::snprintf(line, sizeof line, "%.3f,%.6f\n", t, 0.0);
-      f << line;
-    }
     for (std::size_t i = 0; i < x.values.size(); ++i) {
-      std::snprintf(line, sizeof line, "%.3f,%.6f\n", still + x.time(i), x.values[i]);
+      std::snprintf(line, sizeof line, "%.3f,%.6f\n", x.time(i), x.values[i]);
       f << line;
       xmax = std::max(xmax, std::abs(x.values[i]));
     }

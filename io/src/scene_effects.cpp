@@ -26,6 +26,27 @@ struct RegularPistonMotion {
   }
 };
 
+/// The breather piston's motion sampled at 1/50 of the carrier period, through a cubic
+/// spline (the plate's velocity is its derivative).
+std::shared_ptr<fluid::CubicSpline> breatherSpline(const PistonConfig& p, double g) {
+  fluid::waves::BreatherMakerSpec spec;
+  spec.order = p.order;
+  spec.a0 = p.a0;
+  spec.k0 = p.k0;
+  spec.focusDistance = p.focus_distance;
+  spec.focusTime = p.focus_time;
+  spec.depth = p.depth;
+  spec.still = p.still;
+  spec.ramp = p.ramp_up;
+  spec.rampDown = p.ramp_down;
+  spec.duration = p.duration;
+  spec.dt = 2.0 * M_PI / std::sqrt(g * p.k0) / 50.0;
+  const auto x = fluid::waves::breatherMakerSignal(spec, g);
+  std::vector<double> t(x.values.size());
+  for (std::size_t i = 0; i < t.size(); ++i) t[i] = x.time(i);
+  return std::make_shared<fluid::CubicSpline>(t, x.values);
+}
+
 }  // namespace
 
 template <int D>
@@ -39,6 +60,10 @@ void addSceneEffects(fluid::FluidSimulation<D>& sim, const SceneConfig& c, const
                             p.ramp_up};
       x = [m](double t) { return m.x(t); };
       v = [m](double t) { return m.v(t); };
+    } else if (p.signal == "breather") {
+      const auto spline = breatherSpline(p, g);
+      x = [spline](double t) { return spline->value(t); };
+      v = [spline](double t) { return spline->derivative(t); };
     } else {
       auto spline = std::make_shared<fluid::CubicSpline>(p.table_t, p.table_x);
       x = [spline](double t) { return spline->value(t); };

@@ -24,6 +24,31 @@ void readTable(MapReader& m, PistonConfig& p, const SceneConfig& c) {
   if (p.table_t.size() < 2) m.fail("file", "the piston signal needs at least two rows t [s], X [m]");
 }
 
+/// A Peregrine breather focused downstream (METHOD.md 4c); the motion itself is built
+/// with the effect (scene_effects.cpp), from these numbers alone, so a restart that
+/// changes end_time makes the same signal.
+void readBreather(MapReader& m, PistonConfig& p, const SceneConfig& c) {
+  const double order = m.number("order", 1.0);
+  if (order != 1.0 && order != 2.0) m.fail("order", "expected 1 or 2 (the Peregrine breather's order)");
+  p.order = static_cast<int>(order);
+  p.a0 = m.positive("a0", 0.0, "carrier amplitude a0 [m]");
+  p.k0 = m.positive("k0", 0.0, "carrier wave number k0 [rad/m]");
+  p.focus_distance = m.positive("focus_distance", 0.0, "focus distance from the piston face [m]");
+  p.focus_time = m.positive("focus_time", 0.0, "focus time [s]");
+  p.depth = m.positive("depth", c.waterHeight(), "still water depth d [m]");
+  const double g = std::sqrt(c.gravity[0] * c.gravity[0] + c.gravity[1] * c.gravity[1] + c.gravity[2] * c.gravity[2]);
+  const double carrier_period = 2.0 * M_PI / std::sqrt(g * p.k0);
+  p.still = m.positive("still", 0.0, "time at rest before the waves [s]", true);
+  p.ramp_up = m.positive("ramp_up", 4.0 * carrier_period, "ramp-up time [s]", true);
+  p.ramp_down = m.positive("ramp_down", 2.0 * carrier_period, "ramp-down time at the record's end [s]", true);
+  if (!(p.still + p.ramp_up < p.focus_time)) m.fail("focus_time", "expected focus_time > still + ramp_up [s]");
+  // Not tied to end_time: a restart that runs longer must get the same motion. Past the
+  // record the plate rests (after its ramp-down).
+  p.duration = m.positive("duration", 2.0 * p.focus_time, "duration of the record [s]");
+  if (!(p.duration > p.focus_time + p.ramp_down))
+    m.fail("duration", "expected duration > focus_time + ramp_down [s]: the record must reach past the focus");
+}
+
 void readPiston(MapReader& top, SceneConfig& c) {
   if (!top.has("piston")) {
     top.child("piston");
@@ -43,7 +68,7 @@ void readPiston(MapReader& top, SceneConfig& c) {
     p.z_upper = z[1];
     if (!(p.z_upper - p.z_lower >= 2.0 * c.dx)) m.fail("z", "expected [z_lower, z_upper] at least 2 dx apart [m]");
   }
-  if (!m.has("signal")) m.fail("signal", "required key is missing (expected a map with type: regular or table)");
+  if (!m.has("signal")) m.fail("signal", "required key is missing (expected a map with type: regular, breather or table)");
   MapReader s(m.child("signal"), "piston.signal", top.source());
   p.signal = s.text("type", "regular");
   if (p.signal == "regular") {
@@ -51,10 +76,13 @@ void readPiston(MapReader& top, SceneConfig& c) {
     p.period = s.positive("period", 0.0, "wave period T [s]");
     p.depth = s.positive("depth", c.waterHeight(), "still water depth d [m]");
     p.ramp_up = s.positive("ramp_up", 2.0 * p.period, "ramp-up time [s]", true);
+  } else if (p.signal == "breather") {
+    readBreather(s, p, c);
   } else if (p.signal == "table") {
     readTable(s, p, c);
   } else {
-    s.fail("type", "expected 'regular' (H, T, d) or 'table' (a CSV file t [s], X [m]), got '" + p.signal + "'");
+    s.fail("type", "expected 'regular' (H, T, d), 'breather' (order, a0, k0, focus_distance, focus_time) or 'table' "
+                   "(a CSV file t [s], X [m]), got '" + p.signal + "'");
   }
   s.finish();
   for (std::size_t k = 0; k < c.water.size(); ++k)

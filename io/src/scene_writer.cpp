@@ -132,6 +132,12 @@ std::string resolvedSceneYaml(const SceneConfig& c) {
     if (p.signal == "regular") {
       e << YAML::Key << "wave_height" << YAML::Value << p.wave_height << YAML::Key << "period" << YAML::Value << p.period;
       e << YAML::Key << "depth" << YAML::Value << p.depth << YAML::Key << "ramp_up" << YAML::Value << p.ramp_up;
+    } else if (p.signal == "breather") {
+      e << YAML::Key << "order" << YAML::Value << p.order << YAML::Key << "a0" << YAML::Value << p.a0;
+      e << YAML::Key << "k0" << YAML::Value << p.k0 << YAML::Key << "focus_distance" << YAML::Value << p.focus_distance;
+      e << YAML::Key << "focus_time" << YAML::Value << p.focus_time << YAML::Key << "depth" << YAML::Value << p.depth;
+      e << YAML::Key << "still" << YAML::Value << p.still << YAML::Key << "ramp_up" << YAML::Value << p.ramp_up;
+      e << YAML::Key << "ramp_down" << YAML::Value << p.ramp_down << YAML::Key << "duration" << YAML::Value << p.duration;
     } else {
       e << YAML::Key << "file" << YAML::Value << std::filesystem::absolute(p.table).string();
     }

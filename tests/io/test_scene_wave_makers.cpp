@@ -103,6 +103,70 @@ TEST(SceneWaveMakers, TableSignalAndForcingRegion) {
   EXPECT_EQ(io::resolvedSceneYaml(again), io::resolvedSceneYaml(f));
 }
 
+// A breather piston (METHOD.md 4c) from the scene's numbers alone: defaults from the
+// carrier period, the keys written back, the plate at rest through `still`, then on the
+// motion of fluid::waves::breatherMakerSignal, whose forward transfer gives back the
+// breather at the piston (away from the ramps; the cut below half the carrier frequency
+// takes 2.7% of a0 here, docs/wave-theory.md).
+TEST(SceneWaveMakers, BreatherSignalFromTheScene) {
+  std::string text = kFlume;
+  const std::string regular = "{type: regular, wave_height: 0.04, period: 1.0, ramp_up: 0.5}";
+  text.replace(text.find(regular), regular.size(),
+               "{type: breather, order: 1, a0: 0.01, k0: 6.0, focus_distance: 2.0, focus_time: 20.0, still: 0.05}");
+  const auto c = io::loadSceneText(text, "w.yaml");
+  const double period = 2.0 * M_PI / std::sqrt(9.81 * 6.0);  // carrier, 0.819 s
+  EXPECT_EQ(c.piston.signal, "breather");
+  EXPECT_NEAR(c.piston.ramp_up, 4.0 * period, 1e-12);
+  EXPECT_NEAR(c.piston.ramp_down, 2.0 * period, 1e-12);
+  EXPECT_DOUBLE_EQ(c.piston.duration, 40.0);
+  EXPECT_DOUBLE_EQ(c.piston.depth, 0.3);
+  EXPECT_EQ(io::resolvedSceneYaml(io::loadSceneText(io::resolvedSceneYaml(c), "r.yaml")), io::resolvedSceneYaml(c));
+
+  fluid::waves::BreatherMakerSpec spec;
+  spec.order = 1;
+  spec.a0 = 0.01;
+  spec.k0 = 6.0;
+  spec.focusDistance = 2.0;
+  spec.focusTime = 20.0;
+  spec.depth = 0.3;
+  spec.still = 0.05;
+  spec.ramp = c.piston.ramp_up;
+  spec.rampDown = c.piston.ramp_down;
+  spec.duration = 40.0;
+  spec.dt = period / 50.0;
+  const auto x = fluid::waves::breatherMakerSignal(spec);
+  const auto eta = fluid::waves::breatherElevationAtPiston(fluid::waves::PeregrineBreather(1, 0.01, 6.0), 2.0, 20.0,
+                                                           40.0, spec.dt);
+  const auto back = fluid::waves::elevationFromPistonDisplacement(x, 0.3);
+  double worst = 0.0, largest = 0.0;
+  for (std::size_t i = 0; i < x.values.size(); ++i) {
+    largest = std::max(largest, std::abs(x.values[i]));
+    if (x.time(i) > 0.05 + spec.ramp + 2.0 && x.time(i) < 35.0) worst = std::max(worst, std::abs(back.values[i] - eta.values[i]));
+  }
+  EXPECT_LT(worst, 0.04 * spec.a0);  // measured 0.027 a0
+
+  auto built = io::buildScene<2>(c);
+  fluid::FluidSimulation<2> sim(built.scene.setup, built.scene.fluid, built.scene.boundary);
+  io::addSceneEffects(sim, c, built);
+  const auto [first, last] = sim.walls()->surfaceRange(built.piston_surface);
+  ASSERT_GT(last, first);
+  bool moved = false;
+  while (sim.time() < 0.12) {
+    sim.step();
+    // Between samples the spline departs from the straight line by ~(omega dt)^2/8 of X.
+    const double u = sim.time() / spec.dt;
+    const std::size_t i = static_cast<std::size_t>(u);
+    const double linear = x.values[i] + (u - i) * (x.values[i + 1] - x.values[i]);
+    const double plate = sim.walls()->particles().r[first][0] - 0.1;
+    if (sim.time() <= 0.05) {
+      ASSERT_NEAR(plate, 0.0, 1e-9) << "t = " << sim.time();
+    }
+    ASSERT_NEAR(plate, linear, 3e-3 * largest) << "t = " << sim.time();
+    moved = moved || plate != 0.0;
+  }
+  EXPECT_TRUE(moved);
+}
+
 TEST(SceneWaveMakers, Errors) {
   std::string unnamed = kFlume;
   unnamed.replace(unnamed.find(", piston, damping_zone"), 22, ", damping_zone");
@@ -123,6 +187,18 @@ TEST(SceneWaveMakers, Errors) {
   std::string kind = kFlume;
   kind.replace(kind.find("type: regular"), 13, "type: sine");
   EXPECT_NE(errorOf(kind).find("'piston.signal.type': expected 'regular'"), std::string::npos) << errorOf(kind);
+  const auto breather = [](const std::string& keys) {
+    std::string text = kFlume;
+    const std::string regular = "{type: regular, wave_height: 0.04, period: 1.0, ramp_up: 0.5}";
+    return text.replace(text.find(regular), regular.size(),
+                        "{type: breather, a0: 0.01, k0: 6.0, focus_distance: 2.0, " + keys + "}");
+  };
+  EXPECT_TRUE(errorOf(breather("focus_time: 20")).empty()) << errorOf(breather("focus_time: 20"));
+  EXPECT_NE(errorOf(breather("focus_time: 20, order: 3")).find("'piston.signal.order': expected 1 or 2"),
+            std::string::npos);
+  EXPECT_NE(errorOf(breather("focus_time: 3")).find("'piston.signal.focus_time': expected focus_time > still + ramp_up"),
+            std::string::npos) << errorOf(breather("focus_time: 3"));
+  EXPECT_NE(errorOf(breather("focus_time: 20, duration: 21")).find("'piston.signal.duration'"), std::string::npos);
   EXPECT_NE(errorOf(std::string(kFlume) + "moorings: []\n").find("mooring lines need bodies"), std::string::npos);
 }
 

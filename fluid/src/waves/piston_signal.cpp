@@ -1,5 +1,6 @@
 #include <moorsph/fluid/waves/piston_signal.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -50,6 +51,28 @@ UniformSeries breatherPistonSignal(const PeregrineBreather& breather, double foc
   return pistonDisplacementFromElevation(
       breatherElevationAtPiston(breather, focusDistance, focusTime, duration, dt), depth,
       options, gravity);
+}
+
+UniformSeries breatherMakerSignal(const BreatherMakerSpec& spec, double gravity) {
+  if (!(spec.dt > 0.0)) throw std::invalid_argument("breather signal: the sampling interval must be positive");
+  const std::size_t n_still = static_cast<std::size_t>(std::llround(std::max(spec.still, 0.0) / spec.dt));
+  const double still = static_cast<double>(n_still) * spec.dt;
+  if (!(spec.still >= 0.0 && still + spec.ramp < spec.focusTime && spec.focusTime < spec.duration)) {
+    throw std::invalid_argument("breather signal: need 0 <= still, still + ramp < focus time < duration");
+  }
+  const PeregrineBreather breather(spec.order, spec.a0, spec.k0, gravity);
+  const double f0 = breather.carrierAngularFrequency() / (2.0 * M_PI);
+  PistonFilterOptions filter;
+  filter.lowCutoffFrequency = 0.5 * f0;
+  filter.lowTaperWidth = 0.25 * f0;
+  filter.rampUpTime = spec.ramp;
+  filter.rampDownTime = spec.rampDown;
+  // Built from the end of the still phase: the record's own time is t - still.
+  const UniformSeries waves = breatherPistonSignal(breather, spec.focusDistance, spec.focusTime - still, spec.depth,
+                                                   spec.duration - still, spec.dt, filter, gravity);
+  UniformSeries x{0.0, spec.dt, std::vector<double>(n_still, 0.0)};
+  x.values.insert(x.values.end(), waves.values.begin(), waves.values.end());
+  return x;
 }
 
 }  // namespace moorsph::fluid::waves

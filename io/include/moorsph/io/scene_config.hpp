@@ -85,11 +85,16 @@ struct PistonConfig {
   double x = 0.0;                 ///< rest position of the face [m]
   double bottom = 0.0, top = 0.0; ///< vertical extent [m]
   double z_lower = 0.0, z_upper = 0.0;  ///< across, 3D only [m]
-  std::string signal = "regular"; ///< "regular" or "table"
+  std::string signal = "regular"; ///< "regular", "breather" or "table"
   double wave_height = 0.0;       ///< H [m] (regular)
   double period = 0.0;            ///< T [s] (regular)
-  double depth = 0.0;             ///< still depth d [m] (regular)
-  double ramp_up = 0.0;           ///< [s] (regular)
+  double depth = 0.0;             ///< still depth d [m] (regular, breather)
+  double ramp_up = 0.0;           ///< [s] (regular, breather)
+  /// Peregrine breather (METHOD.md 4c, fluid::waves::BreatherMakerSpec): order, carrier
+  /// a0 [m] and k0 [rad/m], focus distance from the face [m] and time [s], rest before
+  /// the waves [s], ramp-down at the record's end [s], the record's duration [s].
+  int order = 1;
+  double a0 = 0.0, k0 = 0.0, focus_distance = 0.0, focus_time = 0.0, still = 0.0, ramp_down = 0.0, duration = 0.0;
   std::string table;              ///< CSV t [s], X [m] (table), resolved path
   std::vector<double> table_t, table_x;
 };

@@ -40,4 +40,32 @@ UniformSeries breatherPistonSignal(const PeregrineBreather& breather, double foc
                                    double focusTime, double depth, double duration, double dt,
                                    const PistonFilterOptions& options, double gravity = kGravity);
 
+/// A breather wave maker's whole motion (scenes' `signal: {type: breather}` and the
+/// moorsph_breather_signal tool): the piston rests for `still` seconds (bodies settle),
+/// then follows breatherPistonSignal for the record from `still` to `duration`, with a
+/// half-cosine ramp-up over `ramp` seconds (the breather's background sea has its full
+/// amplitude everywhere, so an unramped start would jerk the piston), components below
+/// half the carrier frequency removed (taper a quarter of it wide: a piston cannot make a
+/// mean level, piston_transfer.hpp LOW-FREQUENCY LIMIT) and, when rampDown > 0, a
+/// half-cosine ramp-down over the record's last rampDown seconds so the plate comes to
+/// rest. The ramp front travels at the group speed; it must have left the tank before
+/// the focus time.
+struct BreatherMakerSpec {
+  int order = 1;
+  double a0 = 0.0;             ///< carrier amplitude [m]
+  double k0 = 0.0;             ///< carrier wave number [rad/m]
+  double focusDistance = 0.0;  ///< from the piston's rest position [m]
+  double focusTime = 0.0;      ///< [s]
+  double depth = 0.0;          ///< still depth [m]
+  double still = 0.0;          ///< [s] at rest before the waves (rounded to whole samples)
+  double ramp = 0.0;           ///< [s] ramp-up after the still phase
+  double rampDown = 0.0;       ///< [s] ramp-down at the end of the record
+  double duration = 0.0;       ///< [s] end of the record (the piston holds after it)
+  double dt = 0.0;             ///< [s] sampling interval
+};
+
+/// X(t) [m] at t = i dt from 0 to duration; throws std::invalid_argument for an
+/// inconsistent spec (0 <= still, still + ramp < focusTime < duration are required).
+UniformSeries breatherMakerSignal(const BreatherMakerSpec& spec, double gravity = kGravity);
+
 }  // namespace moorsph::fluid::waves
