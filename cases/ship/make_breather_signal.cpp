@@ -1,11 +1,13 @@
 // moorsph_breather_signal: writes the piston displacement table (CSV t [s], X [m]) that makes a
 // Peregrine breather (METHOD.md section 4c) focused a given distance from the piston at a given
-// time, for a scene's `piston: {signal: {type: table, file: ...}}` (the scene reader has no
-// breather signal type; the table is how a scene gets one).
+// time, for a scene's `piston: {signal: {type: table, file: ...}}` (the same motion as a scene's
+// `signal: {type: breather}`: both come from fluid::waves::breatherMakerSignal). With
+// --theory-at it also writes the breather's theoretical elevation at those distances from the
+// piston (one CSV time,value each, beside --out), the reference for a run's gauges.
 //
 //   moorsph_breather_signal --order 1 --a0 4.5 --k0 0.013333 --focus-distance 200
 //        --focus-time 300 --depth 132 --still 30 --ramp 60 --duration 420 [--dt 0.1]
-//        --out signal.csv
+//        --out signal.csv [--theory-at 0.5,2,2.86 --theory-level 0.35]
 //
 // The piston stays at X = 0 for the first `still` seconds (the water and the moored body settle,
 // and a CI test can stop there), then the target elevation eta(-x_f, t - t_f) at the piston is
@@ -48,6 +50,35 @@ double number(const std::map<std::string, std::string>& a, const std::string& ke
     return fallback;
   }
   return std::stod(it->second);
+}
+
+/// The breather's own surface, level + eta(x - x_f, t - t_f), at each distance x [m] from
+/// the piston in `list` (comma separated), 0 <= t <= duration, one CSV "time,value" each,
+/// named after `out` with "_theory_x<x>" before the extension: the theory a run's gauges
+/// (which read the surface's height) are measured against (moorsph study --reference FILE).
+void writeTheory(const PeregrineBreather& breather, double xf, double tf, double duration, double dt, double level,
+                 const std::string& list, const std::string& out) {
+  const std::string stem = out.size() > 4 && out.substr(out.size() - 4) == ".csv" ? out.substr(0, out.size() - 4) : out;
+  std::size_t from = 0;
+  while (from <= list.size()) {
+    const std::size_t comma = std::min(list.find(',', from), list.size());
+    const std::string item = list.substr(from, comma - from);
+    from = comma + 1;
+    if (item.empty()) continue;
+    const double x = std::stod(item);
+    const std::string name = stem + "_theory_x" + item + ".csv";
+    std::ofstream f(name);
+    if (!f) throw std::runtime_error("cannot write " + name);
+    f << "time,value\n";
+    char line[64];
+    const long n = std::lround(duration / dt);
+    for (long i = 0; i <= n; ++i) {
+      const double t = i * dt;
+      std::snprintf(line, sizeof line, "%.4f,%.7e\n", t, level + breather.elevation(x - xf, t - tf));
+      f << line;
+    }
+    std::printf("wrote %s (theory at %g m from the piston)\n", name.c_str(), x);
+  }
 }
 
 }  // namespace
@@ -95,6 +126,8 @@ int main(int argc, char** argv) {
     std::printf("largest |X| %.3f m; ramp front at the group speed %.2f m/s is %.0f m from the piston at the focus time\n",
                 xmax, cg, cg * (tf - still));
     std::printf("wrote %s (%zu rows)\n", out.c_str(), x.values.size());
+    if (a.count("theory-at"))
+      writeTheory(breather, xf, tf, duration, dt, number(a, "theory-level", 0.0), a.at("theory-at"), out);
     return 0;
   } catch (const std::exception& e) {
     std::cerr << "moorsph_breather_signal: " << e.what() << "\n";
