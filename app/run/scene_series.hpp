@@ -1,8 +1,10 @@
 #pragma once
 // The time series a scene's sensors add to series.h5: /gauges (one column per wave
 // gauge: free-surface height y [m]) and /probes (per pressure probe, the pressure
-// from the wall reactions and the SPH-interpolated one [Pa]) and /piston (the plate's
-// displacement, velocity, the fluid's force on it and the work it has done on the water).
+// from the wall reactions and the SPH-interpolated one [Pa]), /velocity_probes (per
+// velocity probe its components vx, vy (, vz) [m/s], NaN while the point is dry) and
+// /piston (the plate's displacement, velocity, the fluid's force on it and the work it
+// has done on the water).
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -27,6 +29,8 @@ class SceneSeries {
       }
     }
     probe_names_ = built.probe_names;
+    for (const auto& v : built.velocity_probes) velocity_probes_.emplace_back(v);
+    velocity_probe_names_ = built.velocity_probe_names;
     for (std::size_t k = 0; k < built.probes.size(); ++k) {
       const double window = k < built.probe_means.size() ? built.probe_means[k] : 0.0;
       means_.push_back({MovingMean(window), MovingMean(window), window > 0.0});
@@ -86,6 +90,23 @@ class SceneSeries {
                          "wall pressure probes: from the boundary reactions and SPH-interpolated in front of the wall; "
                          "*_mean: trailing moving mean over pressure_probes[].moving_mean of the recorded outputs");
     }
+    if (!velocity_probes_.empty()) {
+      std::vector<io::SeriesColumn> columns;
+      const char* axes[3] = {"_vx", "_vy", "_vz"};
+      for (const auto& n : velocity_probe_names_)
+        for (int a = 0; a < D; ++a) columns.push_back({n + axes[a], "m/s"});
+      recorder.addSeries("velocity_probes", columns,
+                         [this](const fluid::FluidSimulation<D>& s) {
+                           std::vector<double> v;
+                           for (const auto& p : velocity_probes_) {
+                             const fluid::Vec<D> u = p.read(s);
+                             v.insert(v.end(), u.data(), u.data() + D);
+                           }
+                           return v;
+                         },
+                         "velocity probes: SPH-interpolated (Shepard) fluid velocity at a fixed point; NaN where the "
+                         "particle density there is below min_fill (dry)");
+    }
   }
 
  private:
@@ -95,6 +116,8 @@ class SceneSeries {
   std::vector<fluid::WaveGauge<D>> gauges_;
   std::vector<std::string> probe_names_;
   std::vector<fluid::PressureProbe<D>> probes_;
+  std::vector<std::string> velocity_probe_names_;
+  std::vector<fluid::VelocityProbe<D>> velocity_probes_;
   struct Means {
     MovingMean reaction, interpolated;
     bool on;

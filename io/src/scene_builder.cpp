@@ -334,6 +334,13 @@ BuiltScene<D> buildScene(const SceneConfig& c) {
     out.probe_means.push_back(pc.moving_mean);
     out.probes.push_back(p);
   }
+  for (const auto& vc : c.velocity_probes) {
+    fluid::VelocityProbeSpec<D> v;
+    v.point = toVec<D>(vc.point);
+    v.min_fill = vc.min_fill;
+    out.velocity_probe_names.push_back(vc.name);
+    out.velocity_probes.push_back(v);
+  }
   return out;
 }
 

@@ -251,6 +251,25 @@ void readGeometry(MapReader& top, SceneConfig& c) {
     top.fail("effects", "the scene has tanks, boxes or meshes but 'walls' is not in its effects");
 }
 
+void readVelocityProbes(MapReader& top, SceneConfig& c) {
+  const YAML::Node probes = top.child("velocity_probes");
+  if (!probes.IsDefined() || probes.IsNull()) return;
+  if (!probes.IsSequence()) top.fail("velocity_probes", "expected a list of probes, got " + describeNode(probes));
+  for (std::size_t i = 0; i < probes.size(); ++i) {
+    MapReader m(probes[i], "velocity_probes[" + std::to_string(i) + "]", top.source());
+    VelocityProbeConfig p;
+    p.name = m.text("name", "V" + std::to_string(i + 1));
+    p.point = toTriple(m.vector("point", c.dim));
+    p.min_fill = m.number("min_fill", p.min_fill);
+    if (!(p.min_fill > 0.0 && p.min_fill < 1.0)) m.fail("min_fill", "expected a particle density in (0, 1) [-]");
+    for (int a = 0; c.domain_given && a < c.dim; ++a)
+      if (p.point[a] < c.domain.lower[a] || p.point[a] > c.domain.upper[a])
+        m.fail("point", "the point is outside the scene's domain");
+    m.finish();
+    c.velocity_probes.push_back(p);
+  }
+}
+
 void readSensors(MapReader& top, SceneConfig& c) {
   const YamlSource& src = top.source();
   const YAML::Node gauges = top.child("gauges");
@@ -323,6 +342,7 @@ void readSensors(MapReader& top, SceneConfig& c) {
       c.probes.push_back(p);
     }
   }
+  readVelocityProbes(top, c);
 }
 
 }  // namespace moorsph::io::detail

@@ -188,6 +188,15 @@ std::string resolvedSceneYaml(const SceneConfig& c) {
     }
     e << YAML::EndSeq;
   }
+  if (!c.velocity_probes.empty()) {
+    e << YAML::Key << "velocity_probes" << YAML::Value << YAML::BeginSeq;
+    for (const auto& p : c.velocity_probes) {
+      e << YAML::BeginMap << YAML::Key << "name" << YAML::Value << p.name;
+      vec(e, "point", p.point, c.dim);
+      e << YAML::Key << "min_fill" << YAML::Value << p.min_fill << YAML::EndMap;
+    }
+    e << YAML::EndSeq;
+  }
   detail::writeBodySections(e, c);
   e << YAML::Key << "output" << YAML::Value << YAML::BeginMap;
   e << YAML::Key << "interval" << YAML::Value << c.output.interval;

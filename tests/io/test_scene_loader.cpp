@@ -427,6 +427,31 @@ TEST(SceneLoader, WallLawForm) {
   EXPECT_NE(bad.find("'method.boundary_force': expected 'reference' or 'conservative'"), std::string::npos) << bad;
 }
 
+// Velocity probes: read with their defaults, built into specs, written back; a bad
+// fill threshold, a point of the wrong dimension or outside a given domain names the key.
+TEST(SceneLoader, VelocityProbes) {
+  const std::string probes = "velocity_probes:\n  - {name: V1, point: [0.05, 0.1]}\n  - {point: [0.2, 0.25], min_fill: 0.3}\n";
+  const auto c = io::loadSceneText(std::string(kBase) + probes, "s.yaml");
+  ASSERT_EQ(c.velocity_probes.size(), 2u);
+  EXPECT_EQ(c.velocity_probes[1].name, "V2");
+  EXPECT_DOUBLE_EQ(c.velocity_probes[0].min_fill, 0.5);
+  EXPECT_DOUBLE_EQ(c.velocity_probes[1].min_fill, 0.3);
+  const auto built = io::buildScene<2>(c);
+  ASSERT_EQ(built.velocity_probes.size(), 2u);
+  EXPECT_EQ(built.velocity_probe_names[0], "V1");
+  EXPECT_DOUBLE_EQ(built.velocity_probes[0].point[1], 0.1);
+  EXPECT_EQ(io::resolvedSceneYaml(io::loadSceneText(io::resolvedSceneYaml(c), "r.yaml")), io::resolvedSceneYaml(c));
+  const std::string fill = errorOf(std::string(kBase) + "velocity_probes:\n  - {point: [0.05, 0.1], min_fill: 1}\n");
+  EXPECT_NE(fill.find("'velocity_probes[0].min_fill'"), std::string::npos) << fill;
+  EXPECT_NE(fill.find("s.yaml:11:"), std::string::npos) << fill;  // the line of the key
+  EXPECT_NE(errorOf(std::string(kBase) + "velocity_probes:\n  - {point: [0.05, 0.1, 0]}\n").find("'velocity_probes[0].point'"),
+            std::string::npos);
+  const std::string outside = errorOf(std::string(kBase) + "domain: {lower: [-0.1, -0.1], upper: [0.5, 0.5]}\n" +
+                                      "velocity_probes:\n  - {point: [0.05, 0.7]}\n");
+  EXPECT_NE(outside.find("'velocity_probes[0].point': the point is outside the scene's domain"), std::string::npos)
+      << outside;
+}
+
 // A water block fills whole spacings: one whose size is not a multiple of dx stops short
 // of its upper face, and the built scene says where (check and run print it); a block of
 // whole spacings gets no note. Here 0.2 m at dx = 0.015 m is 13.33 spacings: 13 layers,

@@ -1,4 +1,5 @@
 #include <moorsph/fluid/pressure_probe.hpp>
+#include <moorsph/fluid/fluid_near_point.hpp>
 
 #include <cmath>
 #include <stdexcept>
@@ -83,32 +84,13 @@ double PressureProbe<D>::readInterpolated(const FluidSimulation<D>& sim) const {
   if (!sim.walls()) throw std::invalid_argument("pressure probe: the simulation has no walls");
   const Vec<D> point = currentPoint(*sim.walls());
   const Vec<D> r0 = point + spec_.interpolation_offset * currentNormal(*sim.walls());
-  const NeighbourSearch<D>& search = sim.neighbours();
-  const CellGrid<D>& grid = search.grid();
   const FluidParticles<D>& f = sim.fluid();
-  const Domain<D>& domain = sim.setup().domain;
-  const WendlandKernel<D>& kernel = sim.kernel();
   const TaitEos& eos = sim.eos();
-  const double support2 = kernel.supportSquared();
   double weighted = 0.0, weight = 0.0;
-  const auto add = [&](std::size_t j) {
-    const double r2 = domain.minimumImage(f.r[j] - r0).squaredNorm();
-    if (r2 >= support2) return;
-    const double w = kernel.value(std::sqrt(r2)) * f.m[j] / f.rho[j];
+  forEachFluidNear(sim, r0, [&](std::size_t j, double w) {
     weighted += w * eos.pressure(f.rho[j]);
     weight += w;
-  };
-  // The block of cells around r0 holds every particle within 2h of it (cells are
-  // 2h + skin wide; particles moved less than skin/2 since the last re-sort).
-  // Before the first step nothing is sorted by cell yet: scan every particle.
-  if (search.rebuildCount() == 0) {
-    for (std::size_t j = 0; j < f.size(); ++j) add(j);
-  } else {
-    const int cell = grid.cellOf(domain.wrap(r0));
-    for (const std::uint32_t* c = grid.neighbourCellsBegin(cell); c != grid.neighbourCellsEnd(cell); ++c)
-      for (std::uint32_t j = search.cellStart(static_cast<int>(*c)); j < search.cellStart(static_cast<int>(*c) + 1); ++j)
-        add(j);
-  }
+  });
   if (weight <= 0.0) return 0.0;
   const Vec<D> g = sim.setup().has("gravity") ? sim.setup().gravity : Vec<D>::Zero();
   return weighted / weight - eos.rho0() * g.dot(r0 - point);

@@ -1,12 +1,14 @@
 #pragma once
 // Turns a validated SceneConfig into the fluid scene: setup (properties, method,
 // effects, domain), fluid particles, boundary surfaces (tanks first, then boxes, in
-// file order; then the piston and the bodies), and the specs of the scene's gauges and pressure probes.
+// file order; then the piston and the bodies), and the specs of the scene's gauges, pressure
+// probes and velocity probes.
 #include <string>
 #include <vector>
 #include <moorsph/fluid/fluid_simulation.hpp>
 #include <moorsph/fluid/pressure_probe.hpp>
 #include <moorsph/fluid/tank_scene.hpp>
+#include <moorsph/fluid/velocity_probe.hpp>
 #include <moorsph/fluid/wave_gauge.hpp>
 #include <moorsph/io/scene_config.hpp>
 
@@ -20,6 +22,8 @@ struct BuiltScene {
   std::vector<std::string> probe_names;
   std::vector<double> probe_means;  ///< per probe: moving-mean window [s], 0 = none
   std::vector<fluid::PressureProbeSpec<D>> probes;
+  std::vector<std::string> velocity_probe_names;
+  std::vector<fluid::VelocityProbeSpec<D>> velocity_probes;
   std::size_t piston_surface = 0;  ///< index of the piston's surface, if the scene has one
   /// Per body of the scene (in order): its surface, movable and reaction-tracking,
   /// with its reference point at the body's start position.

@@ -140,6 +140,13 @@ struct ProbeConfig {
   double moving_mean = 0.0;     ///< [s]; > 0 adds trailing means over this window (recorded outputs)
 };
 
+/// A velocity probe: the SPH-interpolated fluid velocity at a fixed point
+/// (fluid/velocity_probe.hpp).
+struct VelocityProbeConfig {
+  std::string name;
+  Triple point{0.0, 0.0, 0.0};  ///< [m]
+  double min_fill = 0.5;        ///< particle density xi below which the point reads dry (NaN)
+};
 
 /// A rigid body's surface, in the body frame (origin = the body's reference point).
 struct BodyShapeConfig {
@@ -258,6 +265,7 @@ struct SceneConfig {
   ForcingRegionConfig forcing;
   std::vector<GaugeConfig> gauges;
   std::vector<ProbeConfig> probes;
+  std::vector<VelocityProbeConfig> velocity_probes;
   std::vector<BodyConfig> bodies;
   std::vector<MooringConfig> moorings;
   CouplingConfig coupling;
