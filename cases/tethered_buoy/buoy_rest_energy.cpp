@@ -7,7 +7,9 @@
 //  - the horizontal fluid force on it and the fluid moment about its centroid (the wall
 //    law pushes along the radial normals of the sphere, so the moment must stay ~0);
 //  - the work the fluid has done on the sway and on the rotation since release (J);
-//  - the fluid's kinetic, potential and elastic energy (J).
+//  - the fluid's kinetic, potential and elastic energy (J), and the heave from the nominal
+//    rest (mm);
+// and at the end the test's drift (mean pose over 1-2 s against 4-5 s after release).
 // At the end it prints how far the fluid particles moved up or down, grouped by where
 // they started (next to the sphere, the top layer, the side walls, the floor, the bulk),
 // with the potential energy each group gave up: the still water's own circulation.
@@ -90,7 +92,11 @@ int main(int argc, char** argv) {
   const std::vector<Eigen::Vector3d> r0 = startPositions(co.fluid().fluid());
   double work_sway = 0.0, work_turn = 0.0, next = 0.0, before = co.time();
   std::printf("# t_s tilt_x_deg tilt_z_deg sway_x_mm sway_z_mm Fx_N Fz_N Fy_N Mx_Nm Mz_Nm work_sway_J work_turn_J "
-              "kinetic_J potential_J elastic_J\n");
+              "kinetic_J potential_J elastic_J heave_mm\n");
+  // The 1 mm test's measure (tests/coupling/test_lab_buoy_rest.cpp): the mean pose over
+  // 1-2 s after release against the mean over 4-5 s.
+  Eigen::Vector3d early = Eigen::Vector3d::Zero(), late = Eigen::Vector3d::Zero();
+  int n_early = 0, n_late = 0;
   while (co.time() < end) {
     const auto k0 = co.bodies().kinematics(0);
     co.step();
@@ -102,15 +108,24 @@ int main(int argc, char** argv) {
     horizontal[1] = 0.0;
     work_sway += horizontal.dot(0.5 * (k.velocity + k0.velocity)) * dt;
     work_turn += w.torque.dot(0.5 * (k.angularVelocity + k0.angularVelocity)) * dt;
+    const double since = co.time() - tank.release_time;
+    if (since > 1.0 && since <= 2.0) early += k.position, ++n_early;
+    if (since > 4.0 && since <= 5.0) late += k.position, ++n_late;
     if (co.time() < next) continue;
     next += 0.02;
     const Eigen::Vector3d axis = k.orientation * Eigen::Vector3d::UnitY();
     const auto e = co.calcEnergy();
     const double deg = 180.0 / std::acos(-1.0);
-    std::printf("%.3f %+.4f %+.4f %+.3f %+.3f %+.4f %+.4f %.3f %+.2e %+.2e %+.3e %+.3e %.4e %.5e %.4e\n", co.time() - t0,
+    std::printf("%.3f %+.4f %+.4f %+.3f %+.3f %+.4f %+.4f %.3f %+.2e %+.2e %+.3e %+.3e %.4e %.5e %.4e %+.3f\n", co.time() - t0,
                 std::asin(axis[2]) * deg, -std::asin(axis[0]) * deg, 1e3 * (k.position[0] - scene.rest[0]),
                 1e3 * (k.position[2] - scene.rest[2]), w.force[0], w.force[2], w.force[1], w.torque[0], w.torque[2],
-                work_sway, work_turn, e.fluid_kinetic, e.fluid_potential, e.fluid_elastic);
+                work_sway, work_turn, e.fluid_kinetic, e.fluid_potential, e.fluid_elastic,
+                1e3 * (k.position[1] - scene.rest[1]));
+  }
+  if (n_early > 0 && n_late > 0) {
+    const Eigen::Vector3d drift = late / n_late - early / n_early;
+    std::printf("# drift of the mean pose, 1-2 s -> 4-5 s after release: (%.3f, %.3f, %.3f) mm = %.3f mm\n",
+                1e3 * drift[0], 1e3 * drift[1], 1e3 * drift[2], 1e3 * drift.norm());
   }
   printWhereTheFluidMoved(co.fluid().fluid(), r0, tank, scene, co.bodies().kinematics(0).position);
 }
