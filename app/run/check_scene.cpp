@@ -74,7 +74,7 @@ int checkDim(const io::SceneConfig& c) {
   if (c.piston.present && c.piston.signal == "regular") {
     // What resolution the waves get: particles per wavelength and per wave height.
     const auto& p = c.piston;
-    const double g = std::sqrt(c.gravity[0] * c.gravity[0] + c.gravity[1] * c.gravity[1] + c.gravity[2] * c.gravity[2]);
+    const double g = c.gravityMagnitude();
     const fluid::waves::AiryWave wave(0.5 * p.wave_height, p.period, p.depth, g);
     std::printf("  piston: H = %g m, T = %g s, d = %g m: stroke %.4g m, wavelength %.4g m (%.0f dx), H = %.1f dx, kd = %.3g\n",
                 p.wave_height, p.period, p.depth, fluid::waves::pistonStroke(p.wave_height, p.period, p.depth, g),

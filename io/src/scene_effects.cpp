@@ -51,7 +51,7 @@ std::shared_ptr<fluid::CubicSpline> breatherSpline(const PistonConfig& p, double
 
 template <int D>
 void addSceneEffects(fluid::FluidSimulation<D>& sim, const SceneConfig& c, const BuiltScene<D>& built) {
-  const double g = std::sqrt(c.gravity[0] * c.gravity[0] + c.gravity[1] * c.gravity[1] + c.gravity[2] * c.gravity[2]);
+  const double g = c.gravityMagnitude();
   if (c.piston.present) {
     const auto& p = c.piston;
     typename fluid::Piston<D>::Signal x, v;

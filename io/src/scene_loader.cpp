@@ -241,10 +241,11 @@ int SceneConfig::bodyIndex(const std::string& body) const {
 
 bool SceneConfig::hasEffect(const std::string& e) const { return std::find(effects.begin(), effects.end(), e) != effects.end(); }
 
-double SceneConfig::expectedSpeed() const {
-  const double g = std::sqrt(gravity[0] * gravity[0] + gravity[1] * gravity[1] + gravity[2] * gravity[2]);
-  return std::sqrt(2.0 * g * waterHeight());
+double SceneConfig::gravityMagnitude() const {
+  return std::sqrt(gravity[0] * gravity[0] + gravity[1] * gravity[1] + gravity[2] * gravity[2]);
 }
+
+double SceneConfig::expectedSpeed() const { return std::sqrt(2.0 * gravityMagnitude() * waterHeight()); }
 
 SceneConfig loadSceneText(const std::string& text, const std::string& name, const std::vector<std::string>& assignments) {
   YamlSource source;

@@ -36,7 +36,7 @@ void readBreather(MapReader& m, PistonConfig& p, const SceneConfig& c) {
   p.focus_distance = m.positive("focus_distance", 0.0, "focus distance from the piston face [m]");
   p.focus_time = m.positive("focus_time", 0.0, "focus time [s]");
   p.depth = m.positive("depth", c.waterHeight(), "still water depth d [m]");
-  const double g = std::sqrt(c.gravity[0] * c.gravity[0] + c.gravity[1] * c.gravity[1] + c.gravity[2] * c.gravity[2]);
+  const double g = c.gravityMagnitude();
   const double carrier_period = 2.0 * M_PI / std::sqrt(g * p.k0);
   p.still = m.positive("still", 0.0, "time at rest before the waves [s]", true);
   p.ramp_up = m.positive("ramp_up", 4.0 * carrier_period, "ramp-up time [s]", true);

@@ -274,6 +274,8 @@ struct SceneConfig {
   double spacing() const { return boundary_spacing > 0.0 ? boundary_spacing : dx; }
   /// Height of the water column H [m]: highest water top minus lowest water bottom.
   double waterHeight() const;
+  /// |gravity| [m/s^2].
+  double gravityMagnitude() const;
   /// The speed the scene's water may reach, sqrt(2 g H) [m/s].
   double expectedSpeed() const;
   /// The CFL time step the fluid will take at most [s].
