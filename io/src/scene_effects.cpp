@@ -40,6 +40,7 @@ std::shared_ptr<fluid::CubicSpline> breatherSpline(const PistonConfig& p, double
   spec.ramp = p.ramp_up;
   spec.rampDown = p.ramp_down;
   spec.duration = p.duration;
+  spec.finiteDepthCorrection = p.finite_depth_correction;
   spec.dt = 2.0 * M_PI / std::sqrt(g * p.k0) / 50.0;
   const auto x = fluid::waves::breatherMakerSignal(spec, g);
   std::vector<double> t(x.values.size());

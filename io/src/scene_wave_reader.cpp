@@ -45,6 +45,7 @@ void readBreather(MapReader& m, PistonConfig& p, const SceneConfig& c) {
   // Not tied to end_time: a restart that runs longer must get the same motion. Past the
   // record the plate rests (after its ramp-down).
   p.duration = m.positive("duration", 2.0 * p.focus_time, "duration of the record [s]");
+  p.finite_depth_correction = m.boolean("finite_depth_correction", false);
   if (!(p.duration > p.focus_time + p.ramp_down))
     m.fail("duration", "expected duration > focus_time + ramp_down [s]: the record must reach past the focus");
 }

@@ -138,6 +138,7 @@ std::string resolvedSceneYaml(const SceneConfig& c) {
       e << YAML::Key << "focus_time" << YAML::Value << p.focus_time << YAML::Key << "depth" << YAML::Value << p.depth;
       e << YAML::Key << "still" << YAML::Value << p.still << YAML::Key << "ramp_up" << YAML::Value << p.ramp_up;
       e << YAML::Key << "ramp_down" << YAML::Value << p.ramp_down << YAML::Key << "duration" << YAML::Value << p.duration;
+      e << YAML::Key << "finite_depth_correction" << YAML::Value << p.finite_depth_correction;
     } else {
       e << YAML::Key << "file" << YAML::Value << std::filesystem::absolute(p.table).string();
     }

@@ -121,6 +121,10 @@ TEST(SceneWaveMakers, BreatherSignalFromTheScene) {
   EXPECT_DOUBLE_EQ(c.piston.duration, 40.0);
   EXPECT_DOUBLE_EQ(c.piston.depth, 0.3);
   EXPECT_EQ(io::resolvedSceneYaml(io::loadSceneText(io::resolvedSceneYaml(c), "r.yaml")), io::resolvedSceneYaml(c));
+  EXPECT_FALSE(c.piston.finite_depth_correction);
+  const auto corrected = io::loadSceneText(text, "w.yaml", {"piston.signal.finite_depth_correction=true"});
+  EXPECT_TRUE(corrected.piston.finite_depth_correction);
+  EXPECT_TRUE(io::loadSceneText(io::resolvedSceneYaml(corrected), "r.yaml").piston.finite_depth_correction);
 
   fluid::waves::BreatherMakerSpec spec;
   spec.order = 1;

@@ -68,8 +68,10 @@ UniformSeries breatherMakerSignal(const BreatherMakerSpec& spec, double gravity)
   filter.rampUpTime = spec.ramp;
   filter.rampDownTime = spec.rampDown;
   // Built from the end of the still phase: the record's own time is t - still.
-  const UniformSeries waves = breatherPistonSignal(breather, spec.focusDistance, spec.focusTime - still, spec.depth,
-                                                   spec.duration - still, spec.dt, filter, gravity);
+  UniformSeries target = breatherElevationAtPiston(breather, spec.focusDistance, spec.focusTime - still,
+                                                   spec.duration - still, spec.dt);
+  if (spec.finiteDepthCorrection) target = finiteDepthCorrection(target, spec.focusDistance, spec.depth, gravity);
+  const UniformSeries waves = pistonDisplacementFromElevation(target, spec.depth, filter, gravity);
   UniformSeries x{0.0, spec.dt, std::vector<double>(n_still, 0.0)};
   x.values.insert(x.values.end(), waves.values.begin(), waves.values.end());
   return x;

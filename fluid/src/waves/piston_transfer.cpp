@@ -139,4 +139,33 @@ UniformSeries elevationFromPistonDisplacement(const UniformSeries& displacement,
                        filterSeries(displacement.values, displacement.dt, zeroPad, multiplier)};
 }
 
+namespace {
+
+/// Multiplies each component by exp(-i sign(f) phase(|omega|)).
+template <class Phase>
+UniformSeries shiftPhases(const UniformSeries& elevation, Phase phase) {
+  auto multiplier = [&](double f) -> Complex {
+    if (f == 0.0) return 1.0;
+    const double sign = f > 0.0 ? 1.0 : -1.0;
+    return std::exp(Complex(0.0, -sign * phase(2.0 * kPi * std::abs(f))));
+  };
+  return UniformSeries{elevation.t0, elevation.dt, filterSeries(elevation.values, elevation.dt, true, multiplier)};
+}
+
+}  // namespace
+
+UniformSeries transportLinearWaves(const UniformSeries& elevation, double distance, double depth, double gravity) {
+  requireSeries(elevation, "transportLinearWaves");
+  return shiftPhases(elevation, [&](double omega) {
+    return waveNumberFromAngularFrequency(omega, depth, gravity) * distance;
+  });
+}
+
+UniformSeries finiteDepthCorrection(const UniformSeries& elevation, double distance, double depth, double gravity) {
+  requireSeries(elevation, "finiteDepthCorrection");
+  return shiftPhases(elevation, [&](double omega) {
+    return (omega * omega / gravity - waveNumberFromAngularFrequency(omega, depth, gravity)) * distance;
+  });
+}
+
 }  // namespace moorsph::fluid::waves

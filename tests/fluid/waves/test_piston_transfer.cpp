@@ -177,3 +177,46 @@ TEST(PistonTransfer, BreatherSignalMakesTheBreatherAtThePiston) {
   const double kCarrier = w::waveNumberFromAngularFrequency(b.carrierAngularFrequency(), d);
   EXPECT_LT(maxX, 1.2 * 3.0 * b.carrierAmplitude() / w::pistonHeightToStroke(kCarrier, d));
 }
+
+// Linear transport: a sinusoid carried L downstream on depth d is cos(omega t - k L) with k
+// of the dispersion relation; the finite-depth correction is the record that finite depth
+// carries to what deep water carries the original to; on a wave group at k0 d = 1.75 it
+// delays the group by L (1/c_g,deep - 1/c_g,d), the finite depth's head start.
+TEST(PistonTransfer, LinearTransportAndFiniteDepthCorrection) {
+  const double d = 0.35, L = 2.0, dt = 0.01, omega = std::sqrt(9.81 * 5.0);  // METHOD.md 6.4 order 2: deep k0 d = 1.75
+  const std::size_t n = 8001;
+  w::UniformSeries sine{0.0, dt, std::vector<double>(n)};
+  for (std::size_t i = 0; i < n; ++i)  // ramped in and out over 10 s: no spectral leakage from the ends
+    sine.values[i] = w::halfCosineRamp(sine.time(i), 10.0) * w::halfCosineRamp(80.0 - sine.time(i), 10.0) *
+                     std::cos(omega * sine.time(i));
+  const double k = w::waveNumberFromAngularFrequency(omega, d);
+  const auto moved = w::transportLinearWaves(sine, L, d);
+  double worst = 0.0;
+  for (std::size_t i = 3000; i < 5000; ++i)  // 30-50 s, well inside the ramps
+    worst = std::max(worst, std::abs(moved.values[i] - std::cos(omega * sine.time(i) - k * L)));
+  EXPECT_LT(worst, 1e-6);
+
+  // A Gaussian group of the carrier, 3 s wide, centred at 30 s.
+  w::UniformSeries group{0.0, dt, std::vector<double>(n)};
+  for (std::size_t i = 0; i < n; ++i) {
+    const double t = group.time(i) - 30.0;
+    group.values[i] = std::exp(-t * t / (2.0 * 3.0 * 3.0)) * std::cos(omega * group.time(i));
+  }
+  const auto corrected = w::finiteDepthCorrection(group, L, d);
+  const auto on_depth = w::transportLinearWaves(corrected, L, d);
+  const auto deep = w::transportLinearWaves(group, L, w::kInfiniteDepth);
+  double diff = 0.0;
+  for (std::size_t i = 0; i < n; ++i) diff = std::max(diff, std::abs(on_depth.values[i] - deep.values[i]));
+  EXPECT_LT(diff, 1e-9);
+  const auto centre = [](const w::UniformSeries& s) {
+    double num = 0.0, den = 0.0;
+    for (std::size_t i = 0; i < s.values.size(); ++i) num += s.time(i) * s.values[i] * s.values[i], den += s.values[i] * s.values[i];
+    return num / den;
+  };
+  const double delay = centre(corrected) - centre(group);
+  const double expected = L / w::groupSpeed(omega * omega / 9.81, w::kInfiniteDepth) - L / w::groupSpeed(k, d);
+  std::printf("finite-depth correction at k d = %.2f: group delayed %.4f s (linear group speeds: %.4f s)\n", k * d, delay,
+              expected);
+  EXPECT_GT(expected, 0.3);
+  EXPECT_NEAR(delay, expected, 0.03 * expected);
+}

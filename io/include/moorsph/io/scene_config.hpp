@@ -95,6 +95,7 @@ struct PistonConfig {
   /// the waves [s], ramp-down at the record's end [s], the record's duration [s].
   int order = 1;
   double a0 = 0.0, k0 = 0.0, focus_distance = 0.0, focus_time = 0.0, still = 0.0, ramp_down = 0.0, duration = 0.0;
+  bool finite_depth_correction = false;  ///< pre-compensate the depth's linear dispersion (piston_transfer.hpp)
   std::string table;              ///< CSV t [s], X [m] (table), resolved path
   std::vector<double> table_t, table_x;
 };

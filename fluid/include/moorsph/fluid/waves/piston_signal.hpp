@@ -62,6 +62,10 @@ struct BreatherMakerSpec {
   double rampDown = 0.0;       ///< [s] ramp-down at the end of the record
   double duration = 0.0;       ///< [s] end of the record (the piston holds after it)
   double dt = 0.0;             ///< [s] sampling interval
+  /// Pre-compensate the finite depth's linear dispersion over the focus distance
+  /// (finiteDepthCorrection, piston_transfer.hpp), so the envelope arrives at the focus
+  /// when the deep-water breather says; false: the breather as METHOD.md 4c writes it.
+  bool finiteDepthCorrection = false;
 };
 
 /// X(t) [m] at t = i dt from 0 to duration; throws std::invalid_argument for an

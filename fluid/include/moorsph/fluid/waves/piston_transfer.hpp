@@ -78,6 +78,23 @@ UniformSeries pistonDisplacementFromElevation(const UniformSeries& elevation, do
                                               const PistonFilterOptions& options,
                                               double gravity = kGravity);
 
+/// Linear transport of a wave record over `distance` [m] downstream on depth d [m]: each
+/// frequency moves with its own wave number, Ehat(f) -> Ehat(f) exp(-i sign(f) k(|f|) x)
+/// (a component cos(omega t - k x) at x), with k of omega^2 = g k tanh(k d)
+/// (kInfiniteDepth: deep water). The record is zero padded as pistonDisplacementFromElevation
+/// does, so a group delayed past the record's end is cut rather than wrapped.
+UniformSeries transportLinearWaves(const UniformSeries& elevation, double distance, double depth,
+                                   double gravity = kGravity);
+
+/// The record that linear waves on depth d carry over `distance` to what linear
+/// deep-water waves would carry the given one to: Ehat(f) exp(+i sign(f) (k_d - k_deep) x).
+/// A deep-water target at a piston (a breather of METHOD.md 4c) made on finite depth
+/// travels with the finite-depth group speed, faster below k d ~ 3 (1.07 times deep water's at
+/// k d = 2.1, 1.13 at 1.75); this pre-compensates that linear part so the group reaches
+/// `distance` when deep-water theory says (the nonlinear focusing is not corrected).
+UniformSeries finiteDepthCorrection(const UniformSeries& elevation, double distance, double depth,
+                                    double gravity = kGravity);
+
 /// Forward transfer: far-field elevation eta(t) [m], extrapolated to the piston's mean
 /// position, made by the piston displacement X(t) [m] on depth d [m] (linear theory).
 UniformSeries elevationFromPistonDisplacement(const UniformSeries& displacement, double depth,
