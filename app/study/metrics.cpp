@@ -91,6 +91,22 @@ double peakAmplitude(const Series& s, const Window& w) {
   return peak;
 }
 
+namespace {
+std::size_t indexOfMax(const Series& c) {
+  return static_cast<std::size_t>(std::max_element(c.value.begin(), c.value.end()) - c.value.begin());
+}
+}  // namespace
+
+double maxValue(const Series& s, const Window& w) {
+  const Series c = clip(s, w);
+  return c.value[indexOfMax(c)];
+}
+
+double timeOfMax(const Series& s, const Window& w) {
+  const Series c = clip(s, w);
+  return c.time[indexOfMax(c)];
+}
+
 double firstPeak(const Series& s, const Window& w, double width) {
   const Series c = clip(s, w);
   if (!(width > 0.0)) width = 0.05 * (c.time.back() - c.time.front());
@@ -143,6 +159,8 @@ const std::vector<MetricInfo>& metrics() {
       {"value_at", "series value at --time", true, false, ""},
       {"mean_value", "time average over [--from, --to] (e.g. equilibrium draught)", false, false, ""},
       {"peak_amplitude", "largest |v - v(--from)| over the window", false, false, ""},
+      {"max_value", "largest value in the window (e.g. an impact pressure peak)", false, false, ""},
+      {"time_of_max", "time [s] of the largest value in the window (an arrival or impact time)", false, false, ""},
       {"first_peak", "value of the first local maximum in the window (largest within +- --width)", false, false, ""},
       {"wave_height", "mean crest-to-trough height of the zero-up-crossing waves in the window", false, false, ""},
       {"period_between_peaks", "mean time between crests of the zero-up-crossing waves in the window", false, false, ""},
@@ -164,6 +182,8 @@ double evaluateMetric(const std::string& name, const Series& s, const MetricPara
   }
   if (name == "mean_value") return meanValue(s, p.window);
   if (name == "peak_amplitude") return peakAmplitude(s, p.window);
+  if (name == "max_value") return maxValue(s, p.window);
+  if (name == "time_of_max") return timeOfMax(s, p.window);
   if (name == "first_peak") return firstPeak(s, p.window, p.width);
   if (name == "wave_height") return waveHeight(s, p.window);
   if (name == "period_between_peaks") return periodBetweenPeaks(s, p.window);

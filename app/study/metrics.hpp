@@ -31,6 +31,11 @@ double meanValue(const Series& s, const Window& w);
 /// Largest |v - v(start of window)|: the excursion from the state at the window start
 /// (e.g. a released body's largest heave displacement, a gauge's largest rise).
 double peakAmplitude(const Series& s, const Window& w);
+/// Largest value in the window (e.g. an impact pressure peak).
+double maxValue(const Series& s, const Window& w);
+/// Time of the largest value in the window (the first sample holding it): an arrival
+/// or impact time.
+double timeOfMax(const Series& s, const Window& w);
 /// Value of the first local maximum in the window: the first sample that is the
 /// largest of all samples within +-width [s] of it (and at least width before the
 /// window end, so it is confirmed). Throws when there is none.

@@ -54,6 +54,20 @@ TEST(StudyMetrics, PeakAmplitudeIsTheLargestExcursionFromTheWindowStart) {
   EXPECT_NEAR(st::peakAmplitude(s, {0.25, 1.25}), 1.0, 1e-4);  // the crest sample may fall just outside
 }
 
+TEST(StudyMetrics, MaxValueAndItsTimeOfAnImpactPulse) {
+  // A Gaussian pulse 1.87 high at t = 0.455 s on a 0.58 plateau after it (a wall pressure
+  // history's shape): the window's maximum and its time, and only inside the window.
+  const auto pulse = [](double t) {
+    return 1.87 * std::exp(-std::pow((t - 0.455) / 0.01, 2)) + (t > 0.5 ? 0.58 : 0.0);
+  };
+  const auto s = sample(pulse, 0.0, 1.2, 1e-4);
+  EXPECT_NEAR(st::maxValue(s, {}), 1.87, 1e-6);
+  EXPECT_NEAR(st::timeOfMax(s, {}), 0.455, 1e-4);
+  EXPECT_NEAR(st::maxValue(s, {0.6, 1.2}), 0.58, 1e-12);
+  EXPECT_NEAR(st::evaluateMetric("time_of_max", s, {std::numeric_limits<double>::quiet_NaN(), {0.3, 0.6}}), 0.455, 1e-4);
+  EXPECT_THROW(st::maxValue(s, {2.0, 3.0}), std::invalid_argument);
+}
+
 TEST(StudyMetrics, FirstPeakOfADampedOscillation) {
   // x = exp(-a t) cos(b t) starts at its top (t = 0, not a peak: nothing rises into it);
   // its first maximum after that is where tan(b t) = -a/b, near t = 2 pi / b.
@@ -93,7 +107,7 @@ TEST(StudyMetrics, RmsDifferenceAgainstAReferenceSeries) {
 }
 
 TEST(StudyMetrics, RegistryNamesEveryMetric) {
-  for (const char* name : {"front_position", "value_at", "mean_value", "peak_amplitude", "first_peak", "wave_height",
+  for (const char* name : {"front_position", "value_at", "mean_value", "peak_amplitude", "first_peak", "max_value", "time_of_max", "wave_height",
                            "period_between_peaks", "gauge_rms"})
     EXPECT_NE(st::findMetric(name), nullptr) << name;
   EXPECT_EQ(st::findMetric("front"), nullptr);
