@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # A cases/peregrine scene at several resolutions (METHOD.md 6.4, issue 6 item 3):
-#   cases/peregrine/run_study.sh BUILD OUT SCENE DX_LIST [THREADS]
+#   cases/peregrine/run_study.sh BUILD OUT SCENE DX_LIST [THREADS [--set key=value ...]]
 #   e.g. cases/peregrine/run_study.sh build /tmp/peregrine cases/peregrine/peregrine_o1_reduced.yaml 0.0125,0.01 1
+#        cases/peregrine/run_study.sh build /tmp/pfd cases/peregrine/peregrine_o2_reduced.yaml 0.01 1 \
+#          --set piston.signal.finite_depth_correction=true
 # writes under OUT/<scene name>/:
 #   signal_theory_x<d>.csv  the breather's theoretical surface at each gauge (d m from the piston)
 #   study/                  `moorsph study`: RMS error at the focus gauge G1 against theory over
@@ -12,6 +14,8 @@
 #                           the carrier before the event, and the series with the theory overlaid
 set -euo pipefail
 build=$1 out=$2 scene=$3 dxs=$4 threads=${5:-1}
+shift $(($# < 5 ? $# : 5))
+sets=("$@")  # extra `moorsph study` options, e.g. --set piston.signal.finite_depth_correction=true
 here=$(cd "$(dirname "$0")" && pwd)
 name=$(basename "$scene" .yaml)
 dir="$out/$name"
@@ -31,7 +35,14 @@ PY
   --focus-time "$tf" --depth "$depth" --ramp "$ramp" --duration "$(/usr/bin/python3 -c "print(2 * $tf)")" --dt 0.01 \
   --out "$dir/signal.csv" --theory-at "$dists" --theory-level "$depth" > "$dir/signal.txt"
 from=$(/usr/bin/python3 -c "print($tf - 6)")
-"$build/app/moorsph" study "$scene" --dx "$dxs" --metric gauge_rms --series gauges/G1 \
-  --reference "$dir/signal_theory_x$(/usr/bin/python3 -c "print('%g' % $xf)").csv" --from "$from" --to "$end" \
-  --threads "$threads" --out "$dir/study" --reuse
+if [[ "$dxs" == *,* ]]; then
+  "$build/app/moorsph" study "$scene" --dx "$dxs" --metric gauge_rms --series gauges/G1 \
+    --reference "$dir/signal_theory_x$(/usr/bin/python3 -c "print('%g' % $xf)").csv" --from "$from" --to "$end" \
+    --threads "$threads" --out "$dir/study" --reuse "${sets[@]}"
+else  # one spacing: a plain run where the study would put it (a study needs two)
+  run_dir="$dir/study/runs/dx$dxs"
+  [ -s "$run_dir/series.h5" ] && grep -q "finished" "$run_dir/log.txt" 2>/dev/null ||
+    "$build/app/moorsph" run "$scene" --set "resolution.dx=$dxs" --set "resolution.boundary_spacing=$dxs" \
+      "${sets[@]}" --threads "$threads" --out "$run_dir"
+fi
 /usr/bin/python3 "$here/peregrine_report.py" --out "$dir/report" --theory-stem "$dir/signal" "$dir/study/runs/"*/
