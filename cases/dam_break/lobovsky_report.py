@@ -146,6 +146,7 @@ def report(out, run_dirs):
     for run in run_dirs:
         scene, probes, wall, steps = read_run(run)
         dx = scene["resolution"]["dx"]
+        tag = " + shifting" if "particle_shifting" in scene.get("effects", []) else ""
         width = 4.0 * H / scene["fluid"]["sound_speed"]
         t = probes["time"] / T
         smooth = {}
@@ -154,9 +155,9 @@ def report(out, run_dirs):
             smooth[est] = centred_mean(probes["time"], raw, width)
             for label, series, against in (("raw", raw, ref), ("mean %.0f ms" % (1e3 * width), smooth[est],
                                                                      smoothed_reference(ref, width))):
-                rows.append((dx, fluid_particles(run), steps, wall, est + ", " + label, measures(t, series, against),
+                rows.append((dx, fluid_particles(run), steps, wall, est + ", " + label + tag, measures(t, series, against),
                              measures(against["t"], against["median"], against)))
-        curves.append((dx, t, smooth["interpolated"], smooth["reaction"], width))
+        curves.append((dx, t, smooth["interpolated"], smooth["reaction"], width, tag))
     lines = [
         "Sensor 2 (z = 15 mm), p / (rho g H) against Lobovsky et al. (2014), H = 300 mm.",
         "Median of the experiment: peak %.2f (band of the peak %.2f-%.2f) at t/T = %.2f, plateau %.3f."
@@ -189,7 +190,7 @@ def plot(path, ref, curves):
         ax.fill_between(ref["t"], ref["p2.5"], ref["p97.5"], color="0.8", label="Lobovsky et al. 2014, 2.5-97.5 % (same mean)")
         ax.plot(ref["t"], ref["median"], "k", lw=1.0, label="median")
         for c in curves:
-            ax.plot(c[1], c[col], lw=0.8, label="dx = %g m (H/%.0f)" % (c[0], H / c[0]))
+            ax.plot(c[1], c[col], lw=0.8, label="dx = %g m (H/%.0f)%s" % (c[0], H / c[0], c[5]))
         ax.set_ylabel("p / (rho g H)")
         ax.set_title("sensor 2, z = 15 mm: " + title, fontsize=10)
         ax.set_ylim(-0.3, 3.0)
