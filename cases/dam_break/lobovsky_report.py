@@ -123,6 +123,15 @@ def read_run(run_dir):
     return scene, probes, wall, steps
 
 
+def finished(run_dir):
+    """A run that reached its end time logs 'simulated T s in N steps'."""
+    try:
+        with open(os.path.join(run_dir, "log.txt")) as f:
+            return any(line.startswith("simulated ") for line in f)
+    except OSError:
+        return False
+
+
 def fluid_particles(run_dir):
     """From the run's log line "2D scene '..': N fluid, M boundary particles"."""
     try:
@@ -144,6 +153,9 @@ def report(out, run_dirs):
     band = (float(ref["p2.5"][wr].max()), float(ref["p97.5"][wr].max()))
     rows, curves = [], []
     for run in run_dirs:
+        if not finished(run):
+            print("skipped (the run did not finish: see its log.txt): %s" % run)
+            continue
         scene, probes, wall, steps = read_run(run)
         dx = scene["resolution"]["dx"]
         tag = " + shifting" if "particle_shifting" in scene.get("effects", []) else ""

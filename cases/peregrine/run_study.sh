@@ -41,7 +41,7 @@ if [[ "$dxs" == *,* ]]; then
     --threads "$threads" --out "$dir/study" --reuse "${sets[@]}"
 else  # one spacing: a plain run where the study would put it (a study needs two)
   run_dir="$dir/study/runs/dx$dxs"
-  [ -s "$run_dir/series.h5" ] && grep -q "finished" "$run_dir/log.txt" 2>/dev/null ||
+  [ -s "$run_dir/series.h5" ] && grep -q "^simulated " "$run_dir/log.txt" 2>/dev/null ||
     "$build/app/moorsph" run "$scene" --set "resolution.dx=$dxs" --set "resolution.boundary_spacing=$dxs" \
       "${sets[@]}" --threads "$threads" --out "$run_dir"
 fi

@@ -15,6 +15,7 @@
 // lobovsky-dam-break.md): arrival 2.49, plateau 0.563, smoothed peak 1.13.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
