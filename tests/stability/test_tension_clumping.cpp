@@ -40,6 +40,7 @@ struct ClumpingResult {
   double closest = std::numeric_limits<double>::infinity();  ///< smallest pair distance seen [dx]
   double largest_disturbance = 0.0;                           ///< largest |v - U| seen [m/s]
   double largest_energy = 0.0;  ///< largest (kinetic + elastic energy) / its initial value
+  double volume_error = 0.0;    ///< sum m/rho over the box's area, less 1, at the end
   double final_time = 0.0;
   bool stopped = false;  ///< a runtime guard stopped the run
 };
@@ -100,6 +101,9 @@ ClumpingResult runBlockInTension(bool shifting, double end_time) {
     out.stopped = true;
   }
   out.final_time = sim.time();
+  double volume = 0.0;
+  for (std::size_t i = 0; i < sim.fluid().size(); ++i) volume += sim.fluid().m[i] / sim.fluid().rho[i];
+  out.volume_error = volume / (kSide * kSide) - 1.0;
   return out;
 }
 
@@ -109,10 +113,10 @@ TEST(StabilityTension, BlockInUniformTensionStaysOrderedWithShiftingAndClumpsWit
   const double end = 0.3;  // 60 particle spacings travelled
   const ClumpingResult plain = runBlockInTension(false, end);
   const ClumpingResult shifted = runBlockInTension(true, end);
-  std::printf("reference method: closest pair %.3f dx, largest |v - U| %.3f m/s, energy up to %.3f of its start, to t = %.3f s%s\n", plain.closest,
-              plain.largest_disturbance, plain.largest_energy, plain.final_time, plain.stopped ? " (stopped by a guard)" : "");
-  std::printf("with particle_shifting: closest pair %.3f dx, largest |v - U| %.3f m/s, energy up to %.3f of its start, to t = %.3f s%s\n",
-              shifted.closest, shifted.largest_disturbance, shifted.largest_energy, shifted.final_time,
+  std::printf("reference method: closest pair %.3f dx, largest |v - U| %.3f m/s, energy up to %.3f of its start, volume error %+.4f, to t = %.3f s%s\n", plain.closest,
+              plain.largest_disturbance, plain.largest_energy, plain.volume_error, plain.final_time, plain.stopped ? " (stopped by a guard)" : "");
+  std::printf("with particle_shifting: closest pair %.3f dx, largest |v - U| %.3f m/s, energy up to %.3f of its start, volume error %+.4f, to t = %.3f s%s\n",
+              shifted.closest, shifted.largest_disturbance, shifted.largest_energy, shifted.volume_error, shifted.final_time,
               shifted.stopped ? " (stopped by a guard)" : "");
   EXPECT_FALSE(shifted.stopped);
   EXPECT_FALSE(plain.stopped);
