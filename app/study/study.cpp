@@ -76,16 +76,24 @@ std::string runLabel(std::size_t index, double dx) {
 
 /// A finished run of the same resolved scene in `run.out` (written by an earlier
 /// study): its steps and wall time from study_run.txt, so --reuse need not repeat it.
-bool reusableRun(const RunOptions& run, StudyRow& row) {
+/// A run that went on past the end this study needs (e.g. a --time metric after a
+/// full-length study) is the same scene with a later end_time, and is reused too;
+/// `ran_to` is then its end [s], else 0.
+bool reusableRun(const RunOptions& run, StudyRow& row, double& ran_to) {
+  ran_to = 0.0;
   std::ifstream record(run.out + "/study_run.txt");
   std::ifstream saved(run.out + "/scene.resolved.yaml");
   if (!record || !saved) return false;
+  const std::string saved_text(std::istreambuf_iterator<char>(saved), {});
+  const double saved_end = YAML::Load(saved_text)["end_time"].as<double>();
+  const double needed_end = run.end > 0.0 ? run.end : io::loadSceneFile(run.scene, run.sets).end_time;
+  if (saved_end < needed_end) return false;
   std::vector<std::string> sets = run.sets;
   char end[64];
-  std::snprintf(end, sizeof end, "end_time=%.17g", run.end);  // as runScene adds it
-  if (run.end > 0.0) sets.push_back(end);
-  const std::string resolved = io::resolvedSceneYaml(io::loadSceneFile(run.scene, sets));
-  if (std::string(std::istreambuf_iterator<char>(saved), {}) != resolved) return false;
+  std::snprintf(end, sizeof end, "end_time=%.17g", saved_end);  // as runScene adds it
+  sets.push_back(end);
+  if (io::resolvedSceneYaml(io::loadSceneFile(run.scene, sets)) != saved_text) return false;
+  if (saved_end > needed_end) ran_to = saved_end;
   std::string key;
   while (record >> key) {
     if (key == "steps") record >> row.steps;
@@ -177,13 +185,17 @@ int runStudy(const StudyOptions& o) {
                   row.variant.empty() ? "" : (", " + row.variant).c_str(), run.out.c_str());
       std::fflush(stdout);
       bool reused = false;
+      double ran_to = 0.0;
       try {
-        reused = o.reuse && reusableRun(run, row);
+        reused = o.reuse && reusableRun(run, row, ran_to);
       } catch (const std::exception&) {
         reused = false;  // runScene reports a bad scene below
       }
       if (reused) {
         std::printf("study run %zu/%zu: reusing the finished run in %s\n", rows.size() + 1, total, run.out.c_str());
+        if (ran_to > 0.0)
+          std::printf("  (it ran to %g s, past the %g s needed: its steps and wall time are for the longer run)\n", ran_to,
+                      end);
       } else {
         const auto start = std::chrono::steady_clock::now();
         const int code = runScene(run);

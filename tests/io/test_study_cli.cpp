@@ -111,6 +111,20 @@ TEST(StudyCli, TwoResolutionsTwoCflNumbersWriteConsistentTablesAndPlot) {
     EXPECT_GT(std::stod(drops[k][6]), 0.01);
     EXPECT_LT(std::stod(drops[k][6]), 2.0 * a);
   }
+  // A --time metric earlier than the runs' end reuses them (it would otherwise rerun to
+  // 1.02 x the time): the front at 0.05 s lies behind the front at 0.1 s.
+  const Result early = run("study " + scene + " --dx 0.01,0.02 --metric front_position --time 0.05 " +
+                           "--reference 0.15 --vary method.cfl=0.25,0.5 --threads 1 --reuse --out " + dir + "/study");
+  ASSERT_EQ(early.code, 0) << early.output;
+  EXPECT_NE(early.output.find("study run 4/4: reusing the finished run"), std::string::npos) << early.output;
+  EXPECT_NE(early.output.find("past the 0.051 s needed"), std::string::npos) << early.output;
+  const auto fronts = readCsv(dir + "/study/study.csv");
+  ASSERT_EQ(fronts.size(), 5u);
+  for (std::size_t k = 1; k < fronts.size(); ++k) {
+    EXPECT_EQ(fronts[k][4], csv[k][4]) << "the reused run's steps";
+    EXPECT_GT(std::stod(fronts[k][6]), a - 0.01);
+    EXPECT_LT(std::stod(fronts[k][6]), std::stod(csv[k][6]));
+  }
   if (std::system("/usr/bin/python3 -c 'import matplotlib' > /dev/null 2>&1") == 0) {
     std::ifstream png(dir + "/study/study.png", std::ios::binary);
     char magic[8] = {};
