@@ -11,13 +11,10 @@
 // ahead; the front speed over T 5.1-9.2 is dZ/dT 1.93 against the measured 1.69.
 #include <gtest/gtest.h>
 
-#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <string>
 #include <vector>
 #include "run/run_scene.hpp"
@@ -28,30 +25,15 @@ using namespace moorsph;
 namespace {
 constexpr double kA = 0.1, kG = 9.81, kDx = 0.005;
 const double kTPerSecond = std::sqrt(2.0 * kG / kA);
-
-struct Measured {
-  std::vector<double> T, Z;
-};
-
-Measured readTable(const std::string& path) {
-  std::ifstream in(path);
-  Measured m;
-  std::string line;
-  while (std::getline(in, line)) {
-    if (line.empty() || line[0] == '#' || line[0] == 'T') continue;
-    std::replace(line.begin(), line.end(), ',', ' ');
-    std::istringstream fields(line);
-    double t = 0.0, z = 0.0;
-    if (fields >> t >> z) m.T.push_back(t), m.Z.push_back(z);
-  }
-  return m;
-}
 }  // namespace
 
 TEST(MartinMoyceDamBreak, FrontLiesBetweenTheMeasuredFrontAndRitter) {
   const std::string source = std::getenv("MOORSPH_SOURCE_DIR") ? std::getenv("MOORSPH_SOURCE_DIR") : ".";
-  const Measured measured = readTable(source + "/cases/dam_break/martin_moyce_1952_a2.25in.csv");
-  ASSERT_EQ(measured.T.size(), 15u) << "the measured table did not load";
+  // T,Z rows; the comment and header lines are skipped as in a study's reference file.
+  const auto table = app::study::readCsvSeries(source + "/cases/dam_break/martin_moyce_1952_a2.25in.csv");
+  const std::vector<double>& T = table.time;
+  const std::vector<double>& Z = table.value;
+  ASSERT_EQ(T.size(), 15u) << "the measured table did not load";
 
   app::RunOptions o;
   o.scene = source + "/cases/dam_break/martin_moyce_2d.yaml";
@@ -64,20 +46,20 @@ TEST(MartinMoyceDamBreak, FrontLiesBetweenTheMeasuredFrontAndRitter) {
   ASSERT_GT(front.time.size(), 60u);
 
   std::vector<double> computed;
-  for (std::size_t k = 0; k < measured.T.size(); ++k) {
-    const double t = measured.T[k] / kTPerSecond;
+  for (std::size_t k = 0; k < T.size(); ++k) {
+    const double t = T[k] / kTPerSecond;
     ASSERT_LE(t, front.time.back());
     const double z = app::study::valueAt(front, t) / kA;
     computed.push_back(z);
-    std::printf("T %.3f  Z measured %.3f  computed %.3f (x %.3f)  Ritter %.2f\n", measured.T[k], measured.Z[k], z,
-                z / measured.Z[k], 1.0 + 2.0 * measured.T[k]);
-    EXPECT_GE(z, 0.97 * measured.Z[k]) << "front behind the measured one at T = " << measured.T[k];
-    EXPECT_LE(z, 1.0 + 2.0 * measured.T[k] + kDx / kA) << "front beyond Ritter's at T = " << measured.T[k];
+    std::printf("T %.3f  Z measured %.3f  computed %.3f (x %.3f)  Ritter %.2f\n", T[k], Z[k], z,
+                z / Z[k], 1.0 + 2.0 * T[k]);
+    EXPECT_GE(z, 0.97 * Z[k]) << "front behind the measured one at T = " << T[k];
+    EXPECT_LE(z, 1.0 + 2.0 * T[k] + kDx / kA) << "front beyond Ritter's at T = " << T[k];
   }
-  const std::size_t first = 7, last = measured.T.size() - 1;  // T = 5.09 .. 9.24, the free run
-  const double speed_measured = (measured.Z[last] - measured.Z[first]) / (measured.T[last] - measured.T[first]);
-  const double speed = (computed[last] - computed[first]) / (measured.T[last] - measured.T[first]);
-  std::printf("front speed dZ/dT over T %.2f-%.2f: computed %.3f, measured %.3f, Ritter 2\n", measured.T[first],
-              measured.T[last], speed, speed_measured);
+  const std::size_t first = 7, last = T.size() - 1;  // T = 5.09 .. 9.24, the free run
+  const double speed_measured = (Z[last] - Z[first]) / (T[last] - T[first]);
+  const double speed = (computed[last] - computed[first]) / (T[last] - T[first]);
+  std::printf("front speed dZ/dT over T %.2f-%.2f: computed %.3f, measured %.3f, Ritter 2\n", T[first],
+              T[last], speed, speed_measured);
   EXPECT_LE(speed, 2.0) << "faster than Ritter's front";
 }
