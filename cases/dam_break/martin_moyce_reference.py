@@ -7,7 +7,7 @@ the non-dimensional tables (T = t sqrt(2 g / a), Z = z / a) and writes `time,x` 
     cases/dam_break/martin_moyce_reference.py TABLE A [X0] > front.csv
 
 cases/dam_break/martin_moyce_front_a0.1.csv is this script's output for
-cases/dam_break_2d.yaml (a = 0.1 m, back wall at x = 0) from the a = 2.25 in table.
+cases/dam_break/martin_moyce_2d.yaml (a = 0.1 m, back wall at x = 0) from the a = 2.25 in table.
 """
 import math
 import sys
