@@ -84,6 +84,28 @@ double valueAt(const Series& s, double t) {
 
 double meanValue(const Series& s, const Window& w) { return average(clip(s, w)); }
 
+double cycleMean(const Series& s, const Window& w) {
+  const Series c = clip(s, w);
+  const double mean = average(c);
+  std::vector<double> ups;  // interpolated times where the series rises through the mean
+  for (std::size_t k = 1; k < c.value.size(); ++k)
+    if (c.value[k - 1] < mean && c.value[k] >= mean)
+      ups.push_back(c.time[k - 1] + (mean - c.value[k - 1]) / (c.value[k] - c.value[k - 1]) * (c.time[k] - c.time[k - 1]));
+  if (ups.size() < 2) throw std::invalid_argument("no complete zero-up-crossing cycle in the window");
+  // Trapezoidal average over [ups.front(), ups.back()], the ends interpolated.
+  Series whole;
+  whole.time.push_back(ups.front());
+  whole.value.push_back(valueAt(c, ups.front()));
+  for (std::size_t k = 0; k < c.time.size(); ++k)
+    if (c.time[k] > ups.front() && c.time[k] < ups.back()) {
+      whole.time.push_back(c.time[k]);
+      whole.value.push_back(c.value[k]);
+    }
+  whole.time.push_back(ups.back());
+  whole.value.push_back(valueAt(c, ups.back()));
+  return average(whole);
+}
+
 double peakAmplitude(const Series& s, const Window& w) {
   const Series c = clip(s, w);
   double peak = 0.0;
@@ -158,6 +180,8 @@ const std::vector<MetricInfo>& metrics() {
       {"front_position", "surge front x [m] at --time (dam break); from particles.h5 or a 'front' series", true, false, "front"},
       {"value_at", "series value at --time", true, false, ""},
       {"mean_value", "time average over [--from, --to] (e.g. equilibrium draught)", false, false, ""},
+      {"cycle_mean", "time average over the whole zero-up-crossing cycles in the window (an oscillating equilibrium)", false,
+       false, ""},
       {"peak_amplitude", "largest |v - v(--from)| over the window", false, false, ""},
       {"max_value", "largest value in the window (e.g. an impact pressure peak)", false, false, ""},
       {"time_of_max", "time [s] of the largest value in the window (an arrival or impact time)", false, false, ""},
@@ -181,6 +205,7 @@ double evaluateMetric(const std::string& name, const Series& s, const MetricPara
     return valueAt(s, p.time);
   }
   if (name == "mean_value") return meanValue(s, p.window);
+  if (name == "cycle_mean") return cycleMean(s, p.window);
   if (name == "peak_amplitude") return peakAmplitude(s, p.window);
   if (name == "max_value") return maxValue(s, p.window);
   if (name == "time_of_max") return timeOfMax(s, p.window);

@@ -28,6 +28,12 @@ struct Window {
 double valueAt(const Series& s, double t);
 /// Time average over the window (trapezoidal rule on the samples inside it).
 double meanValue(const Series& s, const Window& w);
+/// Time average over the whole zero-up-crossing cycles in the window: from the first
+/// up-crossing of the window mean to the last (crossing times interpolated linearly).
+/// The equilibrium of an oscillating quantity (a heaving body's draught, a moored
+/// body's mean offset) without the bias a window of a fractional number of periods
+/// leaves (up to amplitude / (pi x cycles)). Throws without a complete cycle.
+double cycleMean(const Series& s, const Window& w);
 /// Largest |v - v(start of window)|: the excursion from the state at the window start
 /// (e.g. a released body's largest heave displacement, a gauge's largest rise).
 double peakAmplitude(const Series& s, const Window& w);

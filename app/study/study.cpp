@@ -18,6 +18,7 @@
 #include <moorsph/io/scene_loader.hpp>
 #include "run/run_scene.hpp"
 #include "study/run_data.hpp"
+#include "study/series_expression.hpp"
 
 namespace moorsph::app::study {
 namespace {
@@ -56,6 +57,16 @@ Reference parseReference(const std::string& text) {
   return r;
 }
 
+/// Why a --series expression cannot be read ("" when it can), checked before any run.
+std::string expressionProblem(const std::string& series) {
+  try {
+    parseSeriesExpression(series);
+    return "";
+  } catch (const std::invalid_argument& e) {
+    return e.what();
+  }
+}
+
 /// The scene's end time as the run resolved it.
 double resolvedEndTime(const std::string& run_dir) {
   return YAML::LoadFile(run_dir + "/scene.resolved.yaml")["end_time"].as<double>();
@@ -63,8 +74,11 @@ double resolvedEndTime(const std::string& run_dir) {
 
 double measure(const StudyOptions& o, const std::string& series, const std::string& run_dir, double dx,
                const Series* reference) {
-  const Series s = series == "front" ? readFrontSeries(run_dir, o.floor, std::isnan(o.band) ? 2.0 * dx : o.band)
-                                     : readRunSeries(run_dir, series);
+  const auto load = [&](const std::string& name) {
+    return name == "front" ? readFrontSeries(run_dir, o.floor, std::isnan(o.band) ? 2.0 * dx : o.band)
+                           : readRunSeries(run_dir, name);
+  };
+  const Series s = combineSeries(parseSeriesExpression(series), load);
   return evaluateMetric(o.metric, s, o.params, reference);
 }
 
@@ -130,6 +144,7 @@ int runStudy(const StudyOptions& o) {
   const std::string series = o.series.empty() ? metric->default_series : o.series;
   std::string problem;
   if (series.empty()) problem = "--metric " + o.metric + " needs --series GROUP/COLUMN (e.g. gauges/G_mid)";
+  else if (const std::string why = expressionProblem(series); !why.empty()) problem = why;
   else if (metric->needs_time && std::isnan(o.params.time)) problem = "--metric " + o.metric + " needs --time T";
   else if (metric->is_error && !reference.series)
     problem = "--metric " + o.metric + " needs --reference FILE (CSV time,value)";

@@ -17,7 +17,8 @@ inline CLI::App* addStudyCommand(CLI::App& app, StudyOptions& o) {
   cmd->add_option("--dx", o.dx_list, "particle spacings [m], comma-separated, e.g. 0.02,0.01,0.005 (walls follow dx)")
       ->required();
   cmd->add_option("--metric", o.metric, metric_help)->required();
-  cmd->add_option("--series", o.series, "series.h5 column GROUP/COLUMN the metric reads (e.g. gauges/G_mid)");
+  cmd->add_option("--series", o.series, "series.h5 column GROUP/COLUMN the metric reads (e.g. gauges/G_mid), or a sum of columns and numbers "
+                  "with spaced signs, e.g. \"gauges/G_left - body_box/y + 0.05\" (a draught)");
   cmd->add_option("--reference", o.reference,
                   "reference: a value, or a CSV file time,value (the metric applied to it; gauge_rms compares with it); "
                   "default: Richardson extrapolate of the three finest runs");

@@ -10,6 +10,7 @@
 #include "study/convergence.hpp"
 #include "study/metrics.hpp"
 #include "study/run_data.hpp"
+#include "study/series_expression.hpp"
 #include "study/study.hpp"
 
 namespace st = moorsph::app::study;
@@ -45,6 +46,19 @@ TEST(StudyMetrics, MeanValueIsTheTimeAverageOverTheWindow) {
   // A whole number of periods of a sine about 0.25 averages 0.25 (an equilibrium draught).
   const auto heave = sample([](double t) { return 0.25 + 0.1 * std::sin(2.0 * kPi * t / 0.8); }, 0.0, 10.0, 1e-3);
   EXPECT_NEAR(st::meanValue(heave, {2.0, 6.0}), 0.25, 1e-6);
+}
+
+TEST(StudyMetrics, CycleMeanRemovesTheBiasOfAFractionalWindow) {
+  // A draught of 0.05 m heaving 11 mm with period 0.72 s: over 1.5-3 s (2.08 periods)
+  // the plain mean is off by up to a / (pi N); over whole cycles it is not.
+  const auto draught = sample([](double t) { return 0.05 + 0.011 * std::sin(2.0 * kPi * t / 0.72 + 0.7); }, 0.0, 3.0, 0.01);
+  const st::Window w{1.5, 3.0};
+  EXPECT_GT(std::abs(st::meanValue(draught, w) - 0.05), 3e-4);
+  EXPECT_NEAR(st::cycleMean(draught, w), 0.05, 2e-5);
+  // A decaying oscillation about a level: the whole-cycle mean stays near the level.
+  const auto decay = sample([](double t) { return 0.2 + 0.01 * std::exp(-t / 2.0) * std::cos(2.0 * kPi * t / 0.75); }, 0.0, 6.0, 0.01);
+  EXPECT_NEAR(st::cycleMean(decay, {2.0, 6.0}), 0.2, 1e-4);
+  EXPECT_THROW(st::cycleMean(draught, {1.5, 1.8}), std::invalid_argument);  // less than one cycle
 }
 
 TEST(StudyMetrics, PeakAmplitudeIsTheLargestExcursionFromTheWindowStart) {
@@ -107,7 +121,7 @@ TEST(StudyMetrics, RmsDifferenceAgainstAReferenceSeries) {
 }
 
 TEST(StudyMetrics, RegistryNamesEveryMetric) {
-  for (const char* name : {"front_position", "value_at", "mean_value", "peak_amplitude", "first_peak", "max_value", "time_of_max", "wave_height",
+  for (const char* name : {"front_position", "value_at", "mean_value", "cycle_mean", "peak_amplitude", "first_peak", "max_value", "time_of_max", "wave_height",
                            "period_between_peaks", "gauge_rms"})
     EXPECT_NE(st::findMetric(name), nullptr) << name;
   EXPECT_EQ(st::findMetric("front"), nullptr);
@@ -168,6 +182,43 @@ TEST(StudyRunData, ReadsAReferenceCsvWithAHeader) {
   std::ofstream(path) << "t,v\n0.0,0.1\n0.0,0.2\n";
   EXPECT_THROW(st::readCsvSeries(path), std::runtime_error);  // times must increase
   EXPECT_THROW(st::readCsvSeries(path + ".missing"), std::runtime_error);
+}
+
+TEST(StudySeriesExpression, ParsesTermsAndRejectsMalformedSums) {
+  const auto terms = st::parseSeriesExpression("gauges/G_left - body_box/y + 0.05");
+  ASSERT_EQ(terms.size(), 3u);
+  EXPECT_EQ(terms[0].name, "gauges/G_left");
+  EXPECT_EQ(terms[1].sign, -1.0);
+  EXPECT_EQ(terms[1].name, "body_box/y");
+  EXPECT_TRUE(terms[2].name.empty());
+  EXPECT_DOUBLE_EQ(terms[2].constant, 0.05);
+  EXPECT_EQ(st::parseSeriesExpression("probes/P-1").size(), 1u);        // a name may hold a '-'
+  EXPECT_DOUBLE_EQ(st::parseSeriesExpression("front - 1e-3")[1].constant, 1e-3);
+  EXPECT_THROW(st::parseSeriesExpression(""), std::invalid_argument);
+  EXPECT_THROW(st::parseSeriesExpression("gauges/G -"), std::invalid_argument);   // dangling sign
+  EXPECT_THROW(st::parseSeriesExpression("gauges/G body/y"), std::invalid_argument);  // no sign between
+  EXPECT_THROW(st::parseSeriesExpression("- - gauges/G"), std::invalid_argument);
+  EXPECT_THROW(st::parseSeriesExpression("0.05 + 1"), std::invalid_argument);      // no series
+}
+
+TEST(StudySeriesExpression, ADraughtFromAGaugeAndABodyHeight) {
+  // A box (half-height 0.05 m) heaving 8 mm about a centre 0.205 m in water whose level
+  // sloshes 2 mm about 0.207 m, sampled at other times (and over a shorter span): the
+  // draught level - (y - 0.05) averages 0.207 - 0.205 + 0.05 = 0.052 m over whole periods.
+  const auto level = sample([](double t) { return 0.207 + 0.002 * std::sin(2.0 * kPi * t / 0.45); }, 0.0, 3.0, 0.01);
+  const auto centre = sample([](double t) { return 0.205 + 0.008 * std::cos(2.0 * kPi * t / 0.75); }, 0.005, 2.905, 0.01);
+  const auto load = [&](const std::string& name) {
+    if (name == "gauges/G") return level;
+    if (name == "body_box/y") return centre;
+    throw std::runtime_error("unknown " + name);
+  };
+  const auto draught = st::combineSeries(st::parseSeriesExpression("gauges/G - body_box/y + 0.05"), load);
+  EXPECT_DOUBLE_EQ(draught.time.front(), 0.01);  // the first base time both cover
+  EXPECT_DOUBLE_EQ(draught.time.back(), 2.9);
+  const double t = 1.0;
+  EXPECT_NEAR(st::valueAt(draught, t), st::valueAt(level, t) - st::valueAt(centre, t) + 0.05, 1e-12);
+  EXPECT_NEAR(st::meanValue(draught, {0.45, 2.7}), 0.052, 2e-6);  // 5 and 3 whole periods
+  EXPECT_THROW(st::combineSeries(st::parseSeriesExpression("gauges/G + other/x"), load), std::runtime_error);
 }
 
 TEST(StudyArguments, DxListVaryAndSplitting) {
