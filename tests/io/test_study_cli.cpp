@@ -152,6 +152,7 @@ TEST(StudyCli, BadArgumentsExitOneWithAMessage) {
            {"--dx 0.02,0.01 --metric front_position --reference 0.2", "needs --time"},
            {"--dx 0.02,0.01 --metric gauge_rms --series gauges/G --reference 0.2", "needs --reference FILE"},
            {"--dx 0.02,0.01 --metric mean_value --reference 0.2", "needs --series"},
+           {"--dx 0.02,0.01 --metric cycle_mean --series 'gauges/G -' --reference 0.2", "ends with a sign"},
        }) {
     const Result r = run(base + c.arguments);
     EXPECT_EQ(r.code, 1) << c.arguments << "\n" << r.output;
