@@ -113,9 +113,18 @@ int runDim(const io::SceneConfig& config, const RunOptions& o, const std::string
   if (restarting) {
     restored = io::readCheckpoint(o.restart);
     particles = io::restoreParticles<D>(restored);
-    if (particles.size() != built.scene.fluid.size())
+    // A run with 'outflow' may have removed spray: its checkpoint holds fewer particles,
+    // and exactly as many fewer as its outflow tally says.
+    const std::size_t removed = restored.outflow.empty() ? 0 : static_cast<std::size_t>(restored.outflow[0]);
+    if (removed > 0 && !config.hasEffect("outflow"))
+      throw io::SceneError(o.restart, "effects",
+                           "the checkpoint's run removed " + std::to_string(removed) +
+                               " particles through 'outflow'; list 'outflow' in the effects to continue it");
+    if (particles.size() + removed != built.scene.fluid.size())
       throw io::SceneError(o.restart, "", "the checkpoint holds " + std::to_string(particles.size()) +
-                                              " fluid particles, the scene " + std::to_string(built.scene.fluid.size()) +
+                                              " fluid particles" +
+                                              (removed ? " (" + std::to_string(removed) + " removed by outflow)" : "") +
+                                              ", the scene " + std::to_string(built.scene.fluid.size()) +
                                               ": it belongs to another scene");
     const std::string changed = changedParticleSetKey(restored.scene_yaml, resolved);
     if (!changed.empty() && !sameBoundary<D>(restored.scene_yaml, built))
@@ -143,7 +152,10 @@ int runDim(const io::SceneConfig& config, const RunOptions& o, const std::string
     io::addSceneEffects(*plain, config, built);
   }
   fluid::FluidSimulation<D>& sim = coupled ? *coupled : *plain;
-  if (restarting) sim.restoreClock(restored.time, static_cast<std::size_t>(restored.steps), restored.last_dt);
+  if (restarting) {
+    sim.restoreClock(restored.time, static_cast<std::size_t>(restored.steps), restored.last_dt);
+    io::restoreOutflow(restored, sim);
+  }
 
   log.line("moorsph run " + config.file + " -> " + fs::absolute(out).string());
   log.line("  " + std::to_string(D) + "D scene '" + config.name + "': " + std::to_string(sim.fluid().size()) +
@@ -220,6 +232,11 @@ int runDim(const io::SceneConfig& config, const RunOptions& o, const std::string
   const auto summary = recorder.runTo(config.end_time, {}, control);
   progress.clear();
   series.flush();
+  if (const auto* outflow = sim.outflow(); outflow && outflow->tally().particles > 0) {
+    const fluid::OutflowTally& t = outflow->tally();
+    log.line(format("outflow: %.0f particles (%.4g kg, carrying %.4g J)", static_cast<double>(t.particles), t.mass, t.energy) +
+             format(" left over the walls (above y = %g m), the first at t = %.6g s", outflow->wallTop(), t.first_time));
+  }
   if (!summary.error.empty()) {
     log.line("error: the run failed: " + summary.error);
     std::ofstream(out + "/error.txt") << summary.error << "\n";

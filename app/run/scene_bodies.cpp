@@ -296,13 +296,13 @@ void attachBodySeries(cases::RunRecorder<D>& recorder, const coupling::CoSimulat
   }
   const std::string J = D == 2 ? "J/m" : "J";
   recorder.addSeries("ledger",
-                     {{"fluid_kinetic", J}, {"fluid_potential", J}, {"fluid_elastic", J}, {"body_kinetic", J},
-                      {"body_potential", J}, {"line_elastic", J}, {"line_dissipated", J}, {"work_by_fluid_on_bodies", J},
-                      {"total", J}},
+                     {{"fluid_kinetic", J}, {"fluid_potential", J}, {"fluid_elastic", J}, {"fluid_outflow", J},
+                      {"body_kinetic", J}, {"body_potential", J}, {"line_elastic", J}, {"line_dissipated", J},
+                      {"work_by_fluid_on_bodies", J}, {"total", J}},
                      [&co](const fluid::FluidSimulation<D>&) {
                        const coupling::EnergyLedger e = co.calcEnergy();
-                       return std::vector<double>{e.fluid_kinetic, e.fluid_potential, e.fluid_elastic, e.body_kinetic,
-                                                  e.body_potential, e.line_elastic, e.line_dissipated,
+                       return std::vector<double>{e.fluid_kinetic, e.fluid_potential, e.fluid_elastic, e.fluid_outflow,
+                                                  e.body_kinetic, e.body_potential, e.line_elastic, e.line_dissipated,
                                                   e.work_by_fluid_on_bodies, e.total()};
                      },
                      "energy ledger of the coupled system (coupling/co_simulation.hpp); total excludes the work term");

@@ -3,6 +3,7 @@
 // gauge: free-surface height y [m]) and /probes (per pressure probe, the pressure
 // from the wall reactions and the SPH-interpolated one [Pa]), /velocity_probes (per
 // velocity probe its components vx, vy (, vz) [m/s], NaN while the point is dry) and
+// /outflow (spray removed by the outflow effect: count, mass, energy carried out),
 // /piston (the plate's displacement, velocity, the fluid's force on it and the work it
 // has done on the water).
 #include <stdexcept>
@@ -19,7 +20,10 @@ template <int D>
 class SceneSeries {
  public:
   SceneSeries(const fluid::FluidSimulation<D>& sim, const io::BuiltScene<D>& built)
-      : names_(built.gauge_names), piston_(sim.template findEffect<fluid::Piston<D>>()), plate_(built.piston_surface) {
+      : names_(built.gauge_names),
+        piston_(sim.template findEffect<fluid::Piston<D>>()),
+        sim_outflow_(sim.outflow()),
+        plate_(built.piston_surface) {
     for (const auto& g : built.gauges) gauges_.emplace_back(g);
     for (std::size_t k = 0; k < built.probes.size(); ++k) {
       try {
@@ -38,6 +42,17 @@ class SceneSeries {
   }
 
   void attach(cases::RunRecorder<D>& recorder) {
+    if (sim_outflow_) {
+      const char* per = D == 2 ? "/m" : "";
+      recorder.addSeries("outflow",
+                         {{"particles", "1"}, {"mass", std::string("kg") + per}, {"energy", std::string("J") + per}},
+                         [this](const fluid::FluidSimulation<D>&) {
+                           const fluid::OutflowTally& t = sim_outflow_->tally();
+                           return std::vector<double>{static_cast<double>(t.particles), t.mass, t.energy};
+                         },
+                         "outflow: fluid particles removed since the start after leaving the domain above the walls, "
+                         "their mass, and the kinetic + potential + elastic energy they carried out");
+    }
     if (piston_) {
       const char* per = D == 2 ? "/m" : "";
       recorder.addSeries("piston",
@@ -112,6 +127,7 @@ class SceneSeries {
  private:
   std::vector<std::string> names_;
   const fluid::Piston<D>* piston_;
+  const fluid::Outflow<D>* sim_outflow_;
   std::size_t plate_;
   std::vector<fluid::WaveGauge<D>> gauges_;
   std::vector<std::string> probe_names_;

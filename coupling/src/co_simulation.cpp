@@ -23,6 +23,7 @@ EnergyLedger CoSimulation<D>::calcEnergy() const {
   e.fluid_kinetic = f.kinetic;
   e.fluid_potential = f.potential;
   e.fluid_elastic = f.elastic;
+  if (const auto* outflow = fluid_->outflow()) e.fluid_outflow = outflow->tally().energy;
   e.body_kinetic = b.kinetic;
   e.body_potential = b.gravitational;
   e.line_elastic = b.lineElastic;

@@ -12,7 +12,7 @@ namespace moorsph::fluid {
 namespace {
 
 const char* const kKnownEffects[] = {"pressure", "viscosity", "xsph", "density_diffusion", "gravity", "walls", "particle_shifting",
-                                     "mirror_floor"};
+                                     "mirror_floor", "outflow"};
 
 void checkSetup(const std::vector<std::string>& effects) {
   for (const auto& e : effects) {
@@ -42,6 +42,7 @@ FluidSimulation<D>::FluidSimulation(FluidSetup<D> setup, FluidParticles<D> fluid
   phase_neighbours_ = timers_.add("neighbours");
   phase_pairs_ = timers_.add("pairs");
   for (const auto& e : effects_) phase_effects_.push_back(timers_.add(e->name()));
+  if (outflow_) phase_outflow_ = timers_.add("outflow");
   phase_integrate_ = timers_.add("integrate");
   phase_checks_ = timers_.add("checks");
   fluid_.allocateWorkArrays();
@@ -64,6 +65,13 @@ void FluidSimulation<D>::buildEffects(BoundaryGeometry<D> boundary) {
   if (setup_.has("particle_shifting"))
     effects_.push_back(std::make_unique<ParticleShifting<D>>(setup_.method.shifting, setup_.dx, setup_.h(),
                                                              walls_ ? &walls_->particles() : nullptr));
+  if (setup_.has("outflow")) {
+    if (!walls_) throw std::invalid_argument("effect 'outflow' needs 'walls' (water counts as gone once it is over them)");
+    const WallExtent<D> extent = walls_->staticExtent(0.5 * setup_.dx);
+    if (extent.empty())
+      throw std::invalid_argument("effect 'outflow' needs a static wall (a tank) to tell water that went over it");
+    outflow_ = std::make_unique<Outflow<D>>(extent, 0.5 * setup_.sound_speed);
+  }
 }
 
 template <int D>
@@ -79,6 +87,7 @@ std::vector<std::string> FluidSimulation<D>::effectNames() const {
   for (const char* term : {"viscosity", "xsph", "density_diffusion", "mirror_floor"})
     if (setup_.has(term)) names.emplace_back(term);
   for (const auto& e : effects_) names.emplace_back(e->name());
+  if (outflow_) names.emplace_back("outflow");
   return names;
 }
 
@@ -176,6 +185,7 @@ void FluidSimulation<D>::step() {
   dt_ = dt;
   ++steps_;
   for (auto& e : effects_) e->advanceTo(time_, StepStage::Corrected);
+  if (outflow_) removeOutflow();
   {
     PhaseTimers::Scope timing(timers_, phase_checks_);
     checkHealth();
@@ -186,6 +196,20 @@ void FluidSimulation<D>::step() {
 template <int D>
 void FluidSimulation<D>::advanceTo(double t) {
   while (time_ < t) step();
+}
+
+// After a whole step (never between predictor and corrector, whose start-of-step
+// arrays must stay aligned): spray that left over the walls is removed. The work
+// arrays are resized (an allocation, but only on the rare steps that remove) and the
+// neighbour lists rebuilt before the next evaluation.
+template <int D>
+void FluidSimulation<D>::removeOutflow() {
+  PhaseTimers::Scope timing(timers_, phase_outflow_);
+  const Vec<D> g = setup_.has("gravity") ? setup_.gravity : Vec<D>::Zero();
+  if (outflow_->apply(fluid_, setup_.domain, g, eos_, time_) == 0) return;
+  if (fluid_.size() == 0) throw SimulationError("outflow: every fluid particle has left the domain at t = " + std::to_string(time_) + " s");
+  fluid_.allocateWorkArrays();
+  rebuild_requested_ = true;
 }
 
 // Runtime guards (run_guard.hpp): one O(N) pass finds the first particle that is

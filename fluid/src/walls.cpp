@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <map>
 #include <stdexcept>
 #include <string>
@@ -147,6 +148,29 @@ double Walls<D>::maxMovingSpeed() const {
   for (const MovableSurface& m : movable_)
     speed = std::max(speed, m.motion.velocity.norm() + m.motion.angular_velocity.norm() * m.radius);
   return speed;
+}
+
+template <int D>
+WallExtent<D> Walls<D>::staticExtent(double tolerance) const {
+  const BoundaryParticles<D>& b = geometry_.particles;
+  auto isStatic = [&](std::size_t k) { return !geometry_.surfaces[b.surface[k]].movable; };
+  WallExtent<D> e;
+  for (std::size_t k = 0; k < b.size(); ++k) {
+    if (!isStatic(k)) continue;
+    e.lower = e.lower.cwiseMin(b.r[k]);
+    e.upper = e.upper.cwiseMax(b.r[k]);
+  }
+  // The walls on each side: the particles on the box's face planes (a tank's walls lie
+  // exactly on them; anything further inside than `tolerance` belongs to something else).
+  for (std::size_t k = 0; k < b.size(); ++k) {
+    if (!isStatic(k)) continue;
+    for (int a = 0; a < D; ++a) {
+      if (a == 1) continue;
+      if (b.r[k][a] < e.lower[a] + tolerance) e.lower_side_top[a] = std::max(e.lower_side_top[a], b.r[k][1]);
+      if (b.r[k][a] > e.upper[a] - tolerance) e.upper_side_top[a] = std::max(e.upper_side_top[a], b.r[k][1]);
+    }
+  }
+  return e;
 }
 
 template <int D>

@@ -24,7 +24,20 @@ Checkpoint captureCheckpoint(const fluid::FluidSimulation<D>& sim) {
   c.rho = f.rho;
   c.m = f.m;
   c.id = f.id;
+  if (const auto* out = sim.outflow(); out && out->tally().particles > 0) {
+    const fluid::OutflowTally& t = out->tally();
+    c.outflow = {static_cast<double>(t.particles), t.mass, t.energy, t.first_time};
+  }
   return c;
+}
+
+template <int D>
+void restoreOutflow(const Checkpoint& c, fluid::FluidSimulation<D>& sim) {
+  if (c.outflow.size() != 4) return;
+  fluid::Outflow<D>* out = sim.updOutflow();
+  if (!out) throw std::runtime_error("the checkpoint's run removed " + std::to_string(static_cast<long long>(c.outflow[0])) +
+                                     " particles through 'outflow', which the scene no longer lists");
+  out->restoreTally({static_cast<std::size_t>(c.outflow[0]), c.outflow[1], c.outflow[2], c.outflow[3]});
 }
 
 template <int D>
@@ -49,6 +62,8 @@ template Checkpoint captureCheckpoint<2>(const fluid::FluidSimulation<2>&);
 template Checkpoint captureCheckpoint<3>(const fluid::FluidSimulation<3>&);
 template fluid::FluidParticles<2> restoreParticles<2>(const Checkpoint&);
 template fluid::FluidParticles<3> restoreParticles<3>(const Checkpoint&);
+template void restoreOutflow<2>(const Checkpoint&, fluid::FluidSimulation<2>&);
+template void restoreOutflow<3>(const Checkpoint&, fluid::FluidSimulation<3>&);
 
 void writeCheckpoint(const std::string& path, const Checkpoint& c) {
   const std::string tmp = path + ".tmp";
@@ -67,6 +82,7 @@ void writeCheckpoint(const std::string& path, const Checkpoint& c) {
     h5::writeDoubles(file, "m", c.m, 1, "kg");
     h5::writeInt64(file, "id", c.id, "1");
     if (!c.bodies.empty()) h5::writeDoubles(file, "bodies", c.bodies, 1, "SI");
+    if (!c.outflow.empty()) h5::writeDoubles(file, "outflow", c.outflow, 1, "particles, kg, J, s");
     if (H5Fflush(file, H5F_SCOPE_GLOBAL) < 0) throw std::runtime_error("HDF5: flush " + tmp);
   }
   std::filesystem::rename(tmp, path);  // atomic on one file system: never a half-written checkpoint
@@ -100,6 +116,7 @@ Checkpoint readCheckpoint(const std::string& path) {
   c.m = h5::readDoubles(file, "m");
   c.id = h5::readInt64(file, "id");
   if (H5Lexists(file, "bodies", H5P_DEFAULT) > 0) c.bodies = h5::readDoubles(file, "bodies");
+  if (H5Lexists(file, "outflow", H5P_DEFAULT) > 0) c.outflow = h5::readDoubles(file, "outflow");
   const std::size_t n = c.rho.size();
   if (c.r.size() != n * c.dim || c.v.size() != n * c.dim || c.m.size() != n || c.id.size() != n)
     throw std::runtime_error(path + ": arrays of inconsistent sizes");

@@ -1,6 +1,8 @@
 #include <moorsph/io/particle_file.hpp>
 
+#include <algorithm>
 #include <cstdio>
+#include <numeric>
 #include <filesystem>
 #include <fstream>
 #include <stdexcept>
@@ -23,11 +25,21 @@ ParticleSnapshot takeSnapshot(const fluid::FluidSimulation<D>& sim) {
   s.type.assign(n, 1);
   s.id.resize(n);
   // Ids are 0..nf-1 from the builder; place each particle at its id (the arrays are
-  // re-sorted by cell during the run). Fall back to storage order otherwise.
+  // re-sorted by cell during the run). Once the outflow has removed particles the ids
+  // have gaps: place them in id order.
   bool ids_dense = true;
   for (std::size_t i = 0; i < nf && ids_dense; ++i) ids_dense = f.id[i] >= 0 && static_cast<std::size_t>(f.id[i]) < nf;
+  std::vector<std::size_t> slot(nf);
+  if (ids_dense) {
+    for (std::size_t i = 0; i < nf; ++i) slot[i] = static_cast<std::size_t>(f.id[i]);
+  } else {
+    std::vector<std::size_t> by_id(nf);
+    std::iota(by_id.begin(), by_id.end(), std::size_t{0});
+    std::sort(by_id.begin(), by_id.end(), [&](std::size_t a, std::size_t b) { return f.id[a] < f.id[b]; });
+    for (std::size_t k = 0; k < nf; ++k) slot[by_id[k]] = k;
+  }
   for (std::size_t i = 0; i < nf; ++i) {
-    const std::size_t k = ids_dense ? static_cast<std::size_t>(f.id[i]) : i;
+    const std::size_t k = slot[i];
     for (int d = 0; d < D; ++d) {
       s.position[3 * k + d] = f.r[i][d];
       s.velocity[3 * k + d] = f.v[i][d];

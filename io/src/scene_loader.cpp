@@ -106,6 +106,8 @@ void readEffects(MapReader& top, SceneConfig& c) {
   }
   if (std::find(c.effects.begin(), c.effects.end(), "pressure") == c.effects.end())
     top.source().fail(node, "effects", "the list must contain 'pressure' (pressure force and continuity)");
+  if (c.hasEffect("outflow") && !c.hasEffect("walls"))
+    top.source().fail(node, "effects", "'outflow' removes spray that left over the walls: 'walls' must be listed too");
 }
 
 void readDomain(MapReader& top, SceneConfig& c) {
@@ -213,7 +215,7 @@ SceneConfig readScene(const YAML::Node& root, const YamlSource& source) {
 const std::vector<std::string>& knownEffects() {
   static const std::vector<std::string> known{"pressure", "viscosity", "xsph",         "density_diffusion", "gravity",
                                               "walls",    "piston",    "damping_zone", "forcing_region", "bodies",
-                                              "particle_shifting", "mirror_floor"};
+                                              "particle_shifting", "mirror_floor", "outflow"};
   return known;
 }
 

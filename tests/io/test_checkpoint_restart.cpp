@@ -196,3 +196,51 @@ TEST(Checkpoint, RestartRejectsAnotherGeometry) {
   EXPECT_EQ(app::runScene(allowed), app::kSuccess);
   EXPECT_TRUE(std::filesystem::exists(dir + "/first.restart/checkpoint.h5"));  // the default directory
 }
+
+TEST(Checkpoint, RestartAfterOutflowKeepsTheTallyAndLeavesTheRemovedOut) {
+  const std::string dir = freshDir("moorsph_restart_outflow");
+  std::string text = test::kSmallDamBreak;
+  text.replace(text.find("walls]"), 6, "walls, outflow]");
+  const std::string scene = test::writeScene(dir + "/scene.yaml", text);
+  ASSERT_EQ(app::runScene(options(scene, dir + "/first", 0.02)), app::kSuccess);
+  // A checkpoint as a run that removed particles ids 5 and 17 writes it.
+  io::Checkpoint c = io::readCheckpoint(dir + "/first/checkpoint.h5");
+  const std::size_t n = c.size();
+  io::Checkpoint edited = c;
+  edited.r.clear(), edited.v.clear(), edited.rho.clear(), edited.m.clear(), edited.id.clear();
+  double removed_mass = 0.0;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (c.id[i] == 5 || c.id[i] == 17) {
+      removed_mass += c.m[i];
+      continue;
+    }
+    for (int d = 0; d < c.dim; ++d) edited.r.push_back(c.r[c.dim * i + d]), edited.v.push_back(c.v[c.dim * i + d]);
+    edited.rho.push_back(c.rho[i]);
+    edited.m.push_back(c.m[i]);
+    edited.id.push_back(c.id[i]);
+  }
+  edited.outflow = {2.0, removed_mass, 1.5, 0.01};
+  io::writeCheckpoint(dir + "/edited.h5", edited);
+
+  app::RunOptions again = options(scene, dir + "/second", 0.04);
+  again.restart = dir + "/edited.h5";
+  ASSERT_EQ(app::runScene(again), app::kSuccess);
+  const auto b = io::readCheckpoint(dir + "/second/checkpoint.h5");
+  EXPECT_EQ(b.size(), n - 2);
+  ASSERT_EQ(b.outflow.size(), 4u);
+  EXPECT_EQ(b.outflow[0], 2.0);
+  EXPECT_EQ(b.outflow[1], removed_mass);
+  EXPECT_EQ(b.outflow[2], 1.5);
+  for (auto id : b.id) EXPECT_TRUE(id != 5 && id != 17);
+
+  // The scene without 'outflow' cannot continue it; nor can a checkpoint that lost
+  // particles without a tally.
+  app::RunOptions plain = options(test::writeScene(dir + "/plain.yaml", test::kSmallDamBreak), dir + "/plain", 0.04);
+  plain.restart = dir + "/edited.h5";
+  EXPECT_EQ(app::runScene(plain), app::kBadInput);
+  edited.outflow.clear();
+  io::writeCheckpoint(dir + "/untallied.h5", edited);
+  app::RunOptions untallied = options(scene, dir + "/untallied", 0.04);
+  untallied.restart = dir + "/untallied.h5";
+  EXPECT_EQ(app::runScene(untallied), app::kBadInput);
+}

@@ -155,6 +155,21 @@ TEST(SceneLoader, FeaturesThatDoNotExistYetAreRejected) {
   EXPECT_NE(typo.find("did you mean 'gravity'"), std::string::npos) << typo;
 }
 
+TEST(SceneLoader, OutflowIsAnEffectThatNeedsWalls) {
+  const auto c = io::loadSceneText(std::string(kBase) + "effects: [pressure, gravity, walls, outflow]\n", "s.yaml");
+  EXPECT_TRUE(c.hasEffect("outflow"));
+  const std::string wall_less = errorOf(R"(dim: 2
+end_time: 0.1
+resolution: {dx: 0.01}
+domain: {lower: [-0.1, -0.1], upper: [0.5, 0.5]}
+geometry:
+  - water: {lower: [0, 0], upper: [0.1, 0.1]}
+effects: [pressure, gravity, outflow]
+)");
+  EXPECT_NE(wall_less.find("s.yaml:7:"), std::string::npos) << wall_less;
+  EXPECT_NE(wall_less.find("'walls' must be listed too"), std::string::npos) << wall_less;
+}
+
 TEST(SceneLoader, CommandLineOverrides) {
   const auto c = io::loadSceneText(kBase, "s.yaml", {"resolution.dx=0.005", "geometry[1].water.upper=[0.1, 0.1]",
                                                      "method.cfl=0.25", "output.interval=0.02"});

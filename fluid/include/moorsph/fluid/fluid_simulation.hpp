@@ -20,6 +20,7 @@
 #include <string>
 #include <vector>
 #include <moorsph/fluid/fluid_effect.hpp>
+#include <moorsph/fluid/outflow.hpp>
 #include <moorsph/fluid/pair_forces.hpp>
 #include <moorsph/fluid/phase_timers.hpp>
 #include <moorsph/fluid/walls.hpp>
@@ -97,6 +98,11 @@ class FluidSimulation {
     return nullptr;
   }
 
+  /// The "outflow" effect (spray leaving an open tank is removed), or null if the scene
+  /// does not name it.
+  const Outflow<D>* outflow() const { return outflow_.get(); }
+  Outflow<D>* updOutflow() { return outflow_.get(); }
+
   /// Names of the effects that were built, in evaluation order (the pair terms first).
   std::vector<std::string> effectNames() const;
   /// Fluid-fluid pairs within 2h evaluated by the last rate evaluation.
@@ -113,6 +119,7 @@ class FluidSimulation {
   double computeDt() const;
   void predict(double dt);
   void correct(double dt);
+  void removeOutflow();
   void checkHealth() const;
 
   FluidSetup<D> setup_;
@@ -123,6 +130,7 @@ class FluidSimulation {
   std::unique_ptr<PairForces<D>> pairs_;
   std::vector<std::unique_ptr<FluidEffect<D>>> effects_;
   Walls<D>* walls_ = nullptr;  // owned by effects_
+  std::unique_ptr<Outflow<D>> outflow_;
   std::vector<char> no_tracking_;
   double time_ = 0.0;
   double dt_ = 0.0;
@@ -132,7 +140,7 @@ class FluidSimulation {
   bool rebuild_requested_ = false;
   std::uint64_t total_interactions_ = 0;
   PhaseTimers timers_;
-  int phase_neighbours_ = 0, phase_pairs_ = 0, phase_integrate_ = 0, phase_checks_ = 0;
+  int phase_neighbours_ = 0, phase_pairs_ = 0, phase_integrate_ = 0, phase_checks_ = 0, phase_outflow_ = -1;
   std::vector<int> phase_effects_;
 };
 

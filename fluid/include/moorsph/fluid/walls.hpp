@@ -9,6 +9,7 @@
 #include <moorsph/fluid/boundary_force_law.hpp>
 #include <moorsph/fluid/counted.hpp>
 #include <moorsph/fluid/fluid_effect.hpp>
+#include <moorsph/fluid/outflow.hpp>
 #include <moorsph/fluid/rigid_motion.hpp>
 
 namespace moorsph::fluid {
@@ -63,6 +64,9 @@ class Walls final : public FluidEffect<D>, public Counted<Walls<D>> {
   const RigidMotion<D>& surfaceMotion(std::size_t surface) const;
   /// Largest speed of any particle of a movable surface at its current motion [m/s].
   double maxMovingSpeed() const;
+  /// Bounding box of the particles of the static (not movable) surfaces [m] and the top
+  /// of those within `tolerance` [m] of each of its vertical faces; empty if there are none.
+  WallExtent<D> staticExtent(double tolerance) const;
   /// Particle index range [first, second) of a surface.
   std::pair<std::size_t, std::size_t> surfaceRange(std::size_t surface) const { return ranges_.at(surface); }
 

@@ -29,6 +29,8 @@ struct Checkpoint {
   std::vector<double> r, v, rho, m;  ///< r and v hold D values per particle
   std::vector<std::int64_t> id;
   std::vector<double> bodies;        ///< packed multibody state; empty without bodies
+  /// The outflow's tally (particles, mass, energy, first time); empty when nothing left.
+  std::vector<double> outflow;
   std::size_t size() const { return rho.size(); }
 };
 
@@ -38,6 +40,11 @@ Checkpoint captureCheckpoint(const fluid::FluidSimulation<D>& sim);
 /// The saved fluid particles, in their saved order, for the simulation's constructor.
 template <int D>
 fluid::FluidParticles<D> restoreParticles(const Checkpoint& checkpoint);
+
+/// Restore the outflow tally of a checkpoint written by a run that removed particles.
+/// Throws std::runtime_error if it did but `sim` has no outflow effect.
+template <int D>
+void restoreOutflow(const Checkpoint& checkpoint, fluid::FluidSimulation<D>& sim);
 
 /// Write to `path` atomically. Throws std::runtime_error on failure.
 void writeCheckpoint(const std::string& path, const Checkpoint& checkpoint);
