@@ -27,7 +27,8 @@ struct Options {
 [[noreturn]] void usage(const std::string& why) {
   std::fprintf(stderr,
                "%s\nusage: moorsph_tethered_buoy [--release vertical|horizontal|rest] [--dx M] [--length M] "
-               "[--width M] [--depth M] [--settle S] [--end S] [--mu PA_S] [--model WORD] [--csv FILE]\n",
+               "[--width M] [--depth M] [--settle S] [--end S] [--mu PA_S] [--model WORD] [--sound-speed-factor F] "
+               "[--outflow 0|1] [--csv FILE]\n",
                why.c_str());
   std::exit(2);
 }
@@ -52,6 +53,8 @@ Options parse(int argc, char** argv) {
     else if (key == "--end") o.end = v;
     else if (key == "--mu") o.tank.mu = v;
     else if (key == "--model") o.tank.mooring_model = value;
+    else if (key == "--sound-speed-factor") o.tank.sound_speed_factor = v;  // c_s = F sqrt(2 g depth)
+    else if (key == "--outflow") o.tank.outflow = v != 0.0;
     else if (key == "--csv") o.csv = value;
     else usage("unknown option " + key);
   }
@@ -133,9 +136,10 @@ int main(int argc, char** argv) {
   const auto& signal = horizontal ? surge : heave;
   const double pull = horizontal ? o.tank.horizontal_pull : o.tank.vertical_pull;
   const auto turns = turningPoints(ts, signal, 0.02 * pull);
-  std::printf("# release=%s dx=%.4f (D/%.0f) tank=%.2fx%.2f depth=%.2f mu=%.4g model=%s\n",
+  std::printf("# release=%s dx=%.4f (D/%.0f) tank=%.2fx%.2f depth=%.2f c_s=%.3g mu=%.4g model=%s\n",
               horizontal ? "horizontal" : (o.tank.release == cases::BuoyRelease::Vertical ? "vertical" : "rest"),
-              o.tank.dx, 2 * o.tank.buoy.radius / o.tank.dx, o.tank.length, o.tank.width, o.tank.depth, o.tank.mu,
+              o.tank.dx, 2 * o.tank.buoy.radius / o.tank.dx, o.tank.length, o.tank.width, o.tank.depth,
+              co.fluid().setup().sound_speed, o.tank.mu,
               o.tank.mooring_model.c_str());
   std::printf("# turning points (t_s, %s_m):", horizontal ? "surge" : "heave");
   for (const auto& e : turns) std::printf(" (%.3f, %+.4f)", e.t, e.value);
@@ -151,6 +155,9 @@ int main(int argc, char** argv) {
     decay_sum += std::abs(turns[i].value - turns[i - 1].value) / std::abs(turns[i - 2].value - turns[i - 3].value);
     ++decays;
   }
+  if (const auto* out = co.fluid().outflow(); out && out->tally().particles > 0)
+    std::printf("# outflow: %zu particles (%.4g kg) thrown over the walls, the first at t = %.3f s after release\n",
+                out->tally().particles, out->tally().mass, out->tally().first_time - release);
   std::printf("period_s=%.4f decay_per_cycle=%.4f first_extremum=%+.4f tension_N=[%.3f, %.3f] particles=%zu "
               "steps=%zu wall_s=%.1f fluid_s=%.1f bodies_s=%.1f exchange_s=%.1f%s%s\n",
               periods ? period_sum / periods : NAN, decays ? decay_sum / decays : NAN,

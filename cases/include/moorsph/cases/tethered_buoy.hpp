@@ -67,6 +67,9 @@ struct TetheredBuoyTank {
   fluid::DensityDiffusionForm density_diffusion_form = fluid::DensityDiffusionForm::Fourtakas;
   /// The floor as mirror images (the mirror_floor effect) instead of a row of wall particles.
   bool mirror_floor = false;
+  /// Spray thrown over the open tank's walls is removed (the outflow effect) instead of
+  /// stopping the run: a buoy breaching at D/8 throws droplets 1 m up.
+  bool outflow = false;
   double vertical_pull = 0.12;     ///< 6.2a [m]
   double horizontal_pull = 0.508;  ///< 6.2b [m]
   std::string mooring_model = "tension_only_spring";
@@ -105,6 +108,7 @@ inline TetheredBuoyScene buildTetheredBuoy(const TetheredBuoyTank& t) {
   spec.fluid.effects = {"pressure", "viscosity", "xsph", "gravity", "walls"};
   if (t.density_diffusion) spec.fluid.effects.push_back("density_diffusion");
   if (t.mirror_floor) spec.fluid.effects.push_back("mirror_floor");
+  if (t.outflow) spec.fluid.effects.push_back("outflow");
   auto scene = fluid::buildTankScene<3>(spec);
 
   TetheredBuoyScene out;
