@@ -154,7 +154,7 @@ int runDim(const io::SceneConfig& config, const RunOptions& o, const std::string
   fluid::FluidSimulation<D>& sim = coupled ? *coupled : *plain;
   if (restarting) {
     sim.restoreClock(restored.time, static_cast<std::size_t>(restored.steps), restored.last_dt);
-    io::restoreOutflow(restored, sim);
+    io::restoreEffectTotals(restored, sim);
   }
 
   log.line("moorsph run " + config.file + " -> " + fs::absolute(out).string());

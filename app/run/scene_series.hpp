@@ -64,7 +64,7 @@ class SceneSeries {
                                                       s.walls()->surfaceMotion(plate_).velocity[0], force, piston_->work()};
                          },
                          "piston wave maker: displacement X and velocity of the plate, x-force of the fluid on it, "
-                         "work it has done on the water since the start of this run (a restart starts it at 0)");
+                         "work it has done on the water since the run started (carried across restarts)");
     }
     if (!gauges_.empty()) {
       std::vector<io::SeriesColumn> columns;

@@ -1,6 +1,7 @@
 #include <moorsph/io/checkpoint.hpp>
 
 #include <filesystem>
+#include <moorsph/fluid/piston.hpp>
 #include <stdexcept>
 #include "h5_helpers.hpp"
 
@@ -28,16 +29,21 @@ Checkpoint captureCheckpoint(const fluid::FluidSimulation<D>& sim) {
     const fluid::OutflowTally& t = out->tally();
     c.outflow = {static_cast<double>(t.particles), t.mass, t.energy, t.first_time};
   }
+  if (const auto* piston = sim.template findEffect<fluid::Piston<D>>()) c.piston_work = {piston->work()};
   return c;
 }
 
 template <int D>
-void restoreOutflow(const Checkpoint& c, fluid::FluidSimulation<D>& sim) {
-  if (c.outflow.size() != 4) return;
-  fluid::Outflow<D>* out = sim.updOutflow();
-  if (!out) throw std::runtime_error("the checkpoint's run removed " + std::to_string(static_cast<long long>(c.outflow[0])) +
-                                     " particles through 'outflow', which the scene no longer lists");
-  out->restoreTally({static_cast<std::size_t>(c.outflow[0]), c.outflow[1], c.outflow[2], c.outflow[3]});
+void restoreEffectTotals(const Checkpoint& c, fluid::FluidSimulation<D>& sim) {
+  if (c.outflow.size() == 4) {
+    fluid::Outflow<D>* out = sim.updOutflow();
+    if (!out)
+      throw std::runtime_error("the checkpoint's run removed " + std::to_string(static_cast<long long>(c.outflow[0])) +
+                               " particles through 'outflow', which the scene no longer lists");
+    out->restoreTally({static_cast<std::size_t>(c.outflow[0]), c.outflow[1], c.outflow[2], c.outflow[3]});
+  }
+  auto* piston = sim.template updEffect<fluid::Piston<D>>();
+  if (piston && c.piston_work.size() == 1) piston->restoreWork(c.piston_work[0]);
 }
 
 template <int D>
@@ -62,8 +68,8 @@ template Checkpoint captureCheckpoint<2>(const fluid::FluidSimulation<2>&);
 template Checkpoint captureCheckpoint<3>(const fluid::FluidSimulation<3>&);
 template fluid::FluidParticles<2> restoreParticles<2>(const Checkpoint&);
 template fluid::FluidParticles<3> restoreParticles<3>(const Checkpoint&);
-template void restoreOutflow<2>(const Checkpoint&, fluid::FluidSimulation<2>&);
-template void restoreOutflow<3>(const Checkpoint&, fluid::FluidSimulation<3>&);
+template void restoreEffectTotals<2>(const Checkpoint&, fluid::FluidSimulation<2>&);
+template void restoreEffectTotals<3>(const Checkpoint&, fluid::FluidSimulation<3>&);
 
 void writeCheckpoint(const std::string& path, const Checkpoint& c) {
   const std::string tmp = path + ".tmp";
@@ -83,6 +89,7 @@ void writeCheckpoint(const std::string& path, const Checkpoint& c) {
     h5::writeInt64(file, "id", c.id, "1");
     if (!c.bodies.empty()) h5::writeDoubles(file, "bodies", c.bodies, 1, "SI");
     if (!c.outflow.empty()) h5::writeDoubles(file, "outflow", c.outflow, 1, "particles, kg, J, s");
+    if (!c.piston_work.empty()) h5::writeDoubles(file, "piston_work", c.piston_work, 1, "J");
     if (H5Fflush(file, H5F_SCOPE_GLOBAL) < 0) throw std::runtime_error("HDF5: flush " + tmp);
   }
   std::filesystem::rename(tmp, path);  // atomic on one file system: never a half-written checkpoint
@@ -117,6 +124,7 @@ Checkpoint readCheckpoint(const std::string& path) {
   c.id = h5::readInt64(file, "id");
   if (H5Lexists(file, "bodies", H5P_DEFAULT) > 0) c.bodies = h5::readDoubles(file, "bodies");
   if (H5Lexists(file, "outflow", H5P_DEFAULT) > 0) c.outflow = h5::readDoubles(file, "outflow");
+  if (H5Lexists(file, "piston_work", H5P_DEFAULT) > 0) c.piston_work = h5::readDoubles(file, "piston_work");
   const std::size_t n = c.rho.size();
   if (c.r.size() != n * c.dim || c.v.size() != n * c.dim || c.m.size() != n || c.id.size() != n)
     throw std::runtime_error(path + ": arrays of inconsistent sizes");

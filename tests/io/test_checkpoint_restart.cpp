@@ -5,6 +5,7 @@
 
 #include "run_support.hpp"
 
+#include <cmath>
 #include <csignal>
 #include <filesystem>
 #include <fstream>
@@ -169,6 +170,12 @@ output: {interval: 0.05, checkpoint_minutes: 0}
   ASSERT_EQ(a.size(), b.size());
   EXPECT_EQ(a.steps, b.steps);
   EXPECT_EQ(countDifferences(a, b), 0u);
+  // The plate's work on the water carries across the restart (it restarted at 0 before).
+  const auto half = io::readCheckpoint(dir + "/first/checkpoint.h5");
+  ASSERT_EQ(a.piston_work.size(), 1u);
+  ASSERT_EQ(b.piston_work.size(), 1u);
+  EXPECT_GT(std::abs(half.piston_work.at(0)), 0.1 * std::abs(a.piston_work[0]));  // a restart from 0 would show
+  EXPECT_EQ(b.piston_work[0], a.piston_work[0]);
 }
 
 TEST(Checkpoint, RestartRejectsAnotherGeometry) {

@@ -97,6 +97,10 @@ class FluidSimulation {
       if (const auto* found = dynamic_cast<const E*>(e.get())) return found;
     return nullptr;
   }
+  template <class E>
+  E* updEffect() {
+    return const_cast<E*>(findEffect<E>());  // the effects are owned, not const
+  }
 
   /// The "outflow" effect (spray leaving an open tank is removed), or null if the scene
   /// does not name it.

@@ -24,9 +24,11 @@ class Piston final : public FluidEffect<D>, public Counted<Piston<D>> {
   void addRates(FluidContext<D>&) override {}
   void advanceTo(double t, StepStage stage) override;
   double displacement() const { return x_; }
-  /// Work done on the fluid since the start of this run [J] (2D: J/m); 0 when the
-  /// surface does not track reactions.
+  /// Work done on the fluid since the run started [J] (2D: J/m), carried across restarts
+  /// by the checkpoint; 0 when the surface does not track reactions.
   double work() const { return work_; }
+  /// Continue the sum of a run restored from a checkpoint.
+  void restoreWork(double work) { work_ = work; }
 
  private:
   Walls<D>* walls_;

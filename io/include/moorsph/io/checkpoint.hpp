@@ -31,6 +31,8 @@ struct Checkpoint {
   std::vector<double> bodies;        ///< packed multibody state; empty without bodies
   /// The outflow's tally (particles, mass, energy, first time); empty when nothing left.
   std::vector<double> outflow;
+  /// The piston's work on the water so far [J]; empty without a piston.
+  std::vector<double> piston_work;
   std::size_t size() const { return rho.size(); }
 };
 
@@ -41,10 +43,11 @@ Checkpoint captureCheckpoint(const fluid::FluidSimulation<D>& sim);
 template <int D>
 fluid::FluidParticles<D> restoreParticles(const Checkpoint& checkpoint);
 
-/// Restore the outflow tally of a checkpoint written by a run that removed particles.
-/// Throws std::runtime_error if it did but `sim` has no outflow effect.
+/// Restore what the effects accumulate over a run: the outflow's tally (throws
+/// std::runtime_error if the checkpoint's run removed particles but `sim` has no outflow
+/// effect) and the piston's work.
 template <int D>
-void restoreOutflow(const Checkpoint& checkpoint, fluid::FluidSimulation<D>& sim);
+void restoreEffectTotals(const Checkpoint& checkpoint, fluid::FluidSimulation<D>& sim);
 
 /// Write to `path` atomically. Throws std::runtime_error on failure.
 void writeCheckpoint(const std::string& path, const Checkpoint& checkpoint);
