@@ -22,7 +22,7 @@ class SceneSeries {
   SceneSeries(const fluid::FluidSimulation<D>& sim, const io::BuiltScene<D>& built)
       : names_(built.gauge_names),
         piston_(sim.template findEffect<fluid::Piston<D>>()),
-        sim_outflow_(sim.outflow()),
+        outflow_(sim.outflow()),
         plate_(built.piston_surface) {
     for (const auto& g : built.gauges) gauges_.emplace_back(g);
     for (std::size_t k = 0; k < built.probes.size(); ++k) {
@@ -42,12 +42,12 @@ class SceneSeries {
   }
 
   void attach(cases::RunRecorder<D>& recorder) {
-    if (sim_outflow_) {
+    if (outflow_) {
       const char* per = D == 2 ? "/m" : "";
       recorder.addSeries("outflow",
                          {{"particles", "1"}, {"mass", std::string("kg") + per}, {"energy", std::string("J") + per}},
                          [this](const fluid::FluidSimulation<D>&) {
-                           const fluid::OutflowTally& t = sim_outflow_->tally();
+                           const fluid::OutflowTally& t = outflow_->tally();
                            return std::vector<double>{static_cast<double>(t.particles), t.mass, t.energy};
                          },
                          "outflow: fluid particles removed since the start after leaving the domain above the walls, "
@@ -127,7 +127,7 @@ class SceneSeries {
  private:
   std::vector<std::string> names_;
   const fluid::Piston<D>* piston_;
-  const fluid::Outflow<D>* sim_outflow_;
+  const fluid::Outflow<D>* outflow_;
   std::size_t plate_;
   std::vector<fluid::WaveGauge<D>> gauges_;
   std::vector<std::string> probe_names_;

@@ -1,8 +1,8 @@
 #include <moorsph/io/checkpoint.hpp>
 
 #include <filesystem>
-#include <moorsph/fluid/piston.hpp>
 #include <stdexcept>
+#include <moorsph/fluid/piston.hpp>
 #include "h5_helpers.hpp"
 
 namespace moorsph::io {
