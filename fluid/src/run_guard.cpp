@@ -74,11 +74,25 @@ void causeOfEscape(std::ostream& os, const FluidParticles<D>& f, std::size_t i, 
   const double wall_speed = ctx.walls ? ctx.walls->maxMovingSpeed() : 0.0;
   const NearestSurface s = nearestSurface(ctx.walls, f.r[i]);
   const std::string wall = s.name.empty() ? "a wall" : "surface '" + s.name + "'";
-  // Above the domain's top and well clear of every wall: a splash thrown over an open
-  // tank, not a leak (no wall is where it left).
-  if (f.r[i][1] >= ctx.setup.domain.upper[1] && s.distance > 2.0 * ctx.setup.h()) {
-    os << ". Likely cause: a splash thrown above the domain's top (y = " << ctx.setup.domain.upper[1]
-       << " m) over an open tank; make the tank (and with it the domain) taller or close it with a lid";
+  // Over the walls (above the top of the static wall on the side it left by, or above
+  // the domain's top clear of every wall): a splash thrown out of an open tank, not a
+  // leak (a leak is below the wall's top). The outflow effect's own test decides.
+  const bool over_top = f.r[i][1] >= ctx.setup.domain.upper[1] && s.distance > 2.0 * ctx.setup.h();
+  bool over_walls = over_top;
+  if (ctx.walls && !over_walls) {
+    const WallExtent<D> extent = ctx.walls->staticExtent(0.5 * ctx.setup.dx);
+    over_walls = !extent.empty() &&
+                 Outflow<D>(extent, std::numeric_limits<double>::infinity()).qualifies(f, i, ctx.setup.domain);
+  }
+  if (over_walls) {
+    os << ". Likely cause: a splash thrown out of an open tank " << (over_top ? "above the domain's top" : "over its walls")
+       << " (it left at y = " << f.r[i][1] << " m)";
+    if (ctx.setup.has("outflow"))
+      os << "; the outflow effect did not take it because it moves at " << speed << " m/s, at least c_s/2 = "
+         << 0.5 * c << " m/s: flung by a numerical fault (raise sound_speed, enable density_diffusion or lower the CFL)";
+    else
+      os << "; list the 'outflow' effect to let such spray leave the run, or make the tank (and with it the domain) "
+            "taller or close it with a lid";
     return;
   }
   os << ". Likely cause: the particle passed through " << wall << ": ";
