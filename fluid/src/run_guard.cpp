@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <sstream>
+#include <moorsph/fluid/outflow.hpp>
 
 namespace moorsph::fluid {
 namespace {

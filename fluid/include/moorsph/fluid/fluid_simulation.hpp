@@ -99,7 +99,9 @@ class FluidSimulation {
   }
   template <class E>
   E* updEffect() {
-    return const_cast<E*>(findEffect<E>());  // the effects are owned, not const
+    for (const auto& e : effects_)
+      if (auto* found = dynamic_cast<E*>(e.get())) return found;
+    return nullptr;
   }
 
   /// The "outflow" effect (spray leaving an open tank is removed), or null if the scene

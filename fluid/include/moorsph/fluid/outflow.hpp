@@ -25,6 +25,7 @@
 #include <moorsph/fluid/domain.hpp>
 #include <moorsph/fluid/fluid_particles.hpp>
 #include <moorsph/fluid/tait_eos.hpp>
+#include <moorsph/fluid/wall_extent.hpp>
 
 namespace moorsph::fluid {
 
@@ -34,19 +35,6 @@ struct OutflowTally {
   double mass = 0.0;    ///< [kg] (2D: kg/m)
   double energy = 0.0;  ///< kinetic + potential (-m g.r) + Tait elastic at removal [J] (2D: J/m)
   double first_time = std::numeric_limits<double>::quiet_NaN();  ///< time of the first removal [s]
-};
-
-/// Where the static walls are: the bounding box of their particles and, per side of it
-/// across the horizontal directions, the top of the wall standing there.
-template <int D>
-struct WallExtent {
-  Vec<D> lower = Vec<D>::Constant(std::numeric_limits<double>::infinity());
-  Vec<D> upper = Vec<D>::Constant(-std::numeric_limits<double>::infinity());
-  /// top of the particles on the plane r[a] = lower[a] (resp. upper[a]); entry 1 unused
-  Vec<D> lower_side_top = Vec<D>::Constant(-std::numeric_limits<double>::infinity());
-  Vec<D> upper_side_top = Vec<D>::Constant(-std::numeric_limits<double>::infinity());
-  double top() const { return upper[1]; }
-  bool empty() const { return !(upper[1] >= lower[1]); }
 };
 
 template <int D>

@@ -9,8 +9,8 @@
 #include <moorsph/fluid/boundary_force_law.hpp>
 #include <moorsph/fluid/counted.hpp>
 #include <moorsph/fluid/fluid_effect.hpp>
-#include <moorsph/fluid/outflow.hpp>
 #include <moorsph/fluid/rigid_motion.hpp>
+#include <moorsph/fluid/wall_extent.hpp>
 
 namespace moorsph::fluid {
 
