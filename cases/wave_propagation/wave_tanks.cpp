@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <complex>
+#include <functional>
 #include <Eigen/Dense>
 #include <stdexcept>
 #include <moorsph/fluid/box_geometry.hpp>
@@ -65,6 +66,51 @@ void addController(WaveTank& tank, const WaveTankControl& control, double height
   }
 }
 
+// The wave a periodic tank makes or starts with: elevation eta(x, t) and velocity
+// (x, height above the floor, t).
+struct WaveField {
+  std::function<double(double, double)> elevation;
+  fluid::ForcingRegion<2>::TargetField velocity;
+};
+
+WaveField makeWaveField(const std::string& theory, double amplitude, double period, double depth) {
+  if (theory == "stokes2") {
+    const auto w = std::make_shared<fluid::waves::Stokes2Wave>(amplitude, period, depth, kG);
+    return {[w](double x, double t) { return w->elevation(x, t); },
+            [w](double x, double y, double t) { return w->velocity(x, y, t); }};
+  }
+  if (theory == "airy") {
+    const auto w = std::make_shared<fluid::waves::AiryWave>(amplitude, period, depth, kG);
+    return {[w](double x, double t) { return w->elevation(x, t); },
+            [w](double x, double y, double t) { return w->velocity(x, y, t); }};
+  }
+  throw std::invalid_argument("periodic wave tank: theory must be 'airy' or 'stokes2', not '" + theory + "'");
+}
+
+// The water already carrying the wave at t = 0 (no maker, so nothing but the scheme acts
+// on it afterwards): each column of the square lattice is stretched to the local surface,
+// y = y0 (d + eta)/d, and each particle gets the wave's velocity and the linear wave's
+// pressure rho0 g (d - y) + rho0 g eta cosh(k y0)/cosh(k d) at its unstretched height
+// y0, which vanishes at the surface (y0 = d) exactly. Mass = rho x the stretched cell.
+void fillWithWave(fluid::FluidParticles<2>& water, const WaveField& wave, double k, double length, double depth,
+                  double dx, const fluid::TaitEos& eos) {
+  const int columns = static_cast<int>(std::lround(length / dx));
+  const int rows = static_cast<int>(std::lround(depth / dx));
+  for (int i = 0; i < columns; ++i) {
+    const double x = (i + 0.5) * dx;
+    const double eta = wave.elevation(x, 0.0);
+    const double stretch = (depth + eta) / depth;
+    for (int j = 0; j < rows; ++j) {
+      const double y0 = (j + 0.5) * dx;
+      const double y = y0 * stretch;
+      const double p = eos.rho0() * kG * ((depth - y) + eta * std::cosh(k * y0) / std::cosh(k * depth));
+      const double rho = eos.density(p);
+      const Eigen::Vector2d v = wave.velocity(x, y0, 0.0);
+      water.add(Vec2(x, y), Vec2(v[0], v[1]), rho, rho * dx * dx * stretch);
+    }
+  }
+}
+
 }  // namespace
 
 WaveTank buildPeriodicWaveTank(const PeriodicWaveTankSpec& spec) {
@@ -95,7 +141,11 @@ WaveTank buildPeriodicWaveTank(const PeriodicWaveTankSpec& spec) {
   setup.domain.periodic = {true, false};
   const fluid::TaitEos eos(setup.rho0, setup.sound_speed, setup.method.gamma);
   fluid::FluidParticles<2> water;
-  fluid::fillBox<2>(water, Vec2(0.0, 0.0), Vec2(length, depth), dx, eos, kG, depth);
+  const WaveField wave = makeWaveField(spec.theory, spec.amplitude, period, depth);
+  if (spec.initial_wave)
+    fillWithWave(water, wave, k, length, depth, dx, eos);
+  else
+    fluid::fillBox<2>(water, Vec2(0.0, 0.0), Vec2(length, depth), dx, eos, kG, depth);
   // The floor: one row of boundary particles at y = 0, normals up, spacing dx,
   // periodic like the water.
   fluid::BoundaryGeometry<2> boundary;
@@ -113,32 +163,24 @@ WaveTank buildPeriodicWaveTank(const PeriodicWaveTankSpec& spec) {
   tank.wavelength = length / spec.wavelengths;
   tank.amplitude = spec.amplitude;
 
-  fluid::ForcingRegionSpec f;
-  f.x_start = spec.maker_start;
-  f.length = spec.maker_length > 0.0 ? spec.maker_length : length;
-  f.floor = 0.0;
-  f.bottom_gap = spec.bottom_gap;
-  f.still_level = depth;
-  f.kappa = spec.kappa;
-  f.mu = spec.fluid.mu;
-  f.ramp_up = spec.ramp_up;
-  f.end_time = spec.forcing_end;
-  f.gain = spec.gain;
-  typename fluid::ForcingRegion<2>::TargetField target;
-  if (spec.theory == "stokes2") {
-    const auto wave = std::make_shared<fluid::waves::Stokes2Wave>(spec.amplitude, period, depth, kG);
-    target = [wave](double x, double y, double t) { return wave->velocity(x, y, t); };
-  } else if (spec.theory == "airy") {
-    const auto wave = std::make_shared<fluid::waves::AiryWave>(spec.amplitude, period, depth, kG);
-    target = [wave](double x, double y, double t) { return wave->velocity(x, y, t); };
-  } else {
-    throw std::invalid_argument("periodic wave tank: theory must be 'airy' or 'stokes2', not '" + spec.theory + "'");
+  if (!spec.initial_wave) {  // a free wave needs no maker
+    fluid::ForcingRegionSpec f;
+    f.x_start = spec.maker_start;
+    f.length = spec.maker_length > 0.0 ? spec.maker_length : length;
+    f.floor = 0.0;
+    f.bottom_gap = spec.bottom_gap;
+    f.still_level = depth;
+    f.kappa = spec.kappa;
+    f.mu = spec.fluid.mu;
+    f.ramp_up = spec.ramp_up;
+    f.end_time = spec.forcing_end;
+    f.gain = spec.gain;
+    // The forcing region is [x_start, x_start + length] without wrapping: a region that
+    // covers the tank starts at 0.
+    auto forcing = std::make_unique<fluid::ForcingRegion<2>>(f, wave.velocity, tank.sim->cflDt());
+    tank.forcing = forcing.get();
+    tank.sim->addEffect(std::move(forcing));
   }
-  // The forcing region is [x_start, x_start + length] without wrapping: a region that
-  // covers the tank starts at 0.
-  auto forcing = std::make_unique<fluid::ForcingRegion<2>>(f, target, tank.sim->cflDt());
-  tank.forcing = forcing.get();
-  tank.sim->addEffect(std::move(forcing));
 
   std::vector<double> xs = spec.gauges;
   if (xs.empty())

@@ -9,6 +9,10 @@
 // - Forcing region (periodic tank of one wavelength, region over half of it, Airy
 //   target): the trough-to-crest height averaged over six gauges spread along the
 //   wavelength is within 10% of the requested 2a.
+// - Initial wave (periodic tank started with a Stokes 2nd-order wave, no maker): at t = 0
+//   the gauges read the theory's elevation, and 2.25 periods later the wave is still there
+//   with its height (within 10%) and phase (rms misfit to the theory's elevation at that
+//   time below a fifth of the amplitude): it travels the right way at the right speed.
 // - Damping zone: a piston flume's incident and reflected waves are separated from
 //   twelve gauges (Mansard & Funke least squares with a decay rate); the reflection
 //   coefficient at the zone's start, which equals the standing-wave envelope ratio
@@ -19,6 +23,7 @@
 #include <cstdio>
 #include <moorsph/fluid/tank_scene.hpp>
 #include <moorsph/fluid/waves/dispersion.hpp>
+#include <moorsph/fluid/waves/stokes2_wave.hpp>
 #include "wave_tanks.hpp"
 
 using namespace moorsph;
@@ -100,6 +105,42 @@ TEST(ForcingRegion, MakesTheRequestedAmplitude) {
   const double ratio = sum / rec.eta.size() / (2.0 * spec.amplitude);
   std::printf("generated / requested height: %.3f\n", ratio);
   EXPECT_NEAR(ratio, 1.0, 0.10);
+}
+
+TEST(PeriodicWaveTank, InitialWaveTravelsAtThePhaseSpeed) {
+  cases::PeriodicWaveTankSpec spec;  // lambda = 1.0 m, kd = 1.57, H/lambda = 0.05
+  spec.fluid.dx = 0.0125;            // adjusted to 0.0139 m: 3.6 particles per height
+  spec.fluid.method.predictor_fraction = 0.5;
+  spec.fluid.method.h_factor = 2.0;
+  spec.fluid.method.density_diffusion_form = fluid::DensityDiffusionForm::Renormalised;
+  spec.fluid.effects = {"pressure", "viscosity", "gravity", "walls", "density_diffusion"};  // no XSPH
+  spec.floor = "mirror";
+  spec.amplitude = 0.025;
+  spec.theory = "stokes2";
+  spec.initial_wave = true;
+  auto tank = cases::buildPeriodicWaveTank(spec);
+  const fluid::waves::Stokes2Wave theory(spec.amplitude, tank.period, tank.depth, 9.81);
+  // A quarter period past two periods: there a wave going the wrong way, or a standing
+  // one, would be a quarter wavelength off (at whole periods it would look right).
+  const double end = 2.25 * tank.period;
+  const auto rec = cases::runAndRecord(tank, end, tank.period / 50.0);
+  const auto misfit = [&](std::size_t k) {  // rms of gauge minus theory at sample k
+    double sum = 0.0;
+    for (std::size_t g = 0; g < rec.eta.size(); ++g) {
+      const double e = rec.eta[g][k] - theory.elevation(tank.gauges[g].spec().position[0], rec.t[k]);
+      sum += e * e;
+    }
+    return std::sqrt(sum / rec.eta.size());
+  };
+  double height = 0.0;
+  for (const auto& eta : rec.eta) height += cases::meanWaveHeight(rec.t, eta, tank.period, end - tank.period, end);
+  height /= rec.eta.size();
+  std::printf("misfit to theory: %.4f m at t = 0, %.4f m at t = %.2f s; height over the last period %.4f m "
+              "(%.3f of 2a)\n", misfit(0), misfit(rec.t.size() - 1), rec.t.back(), height,
+              height / (2.0 * spec.amplitude));
+  EXPECT_LT(misfit(0), 0.1 * spec.amplitude);
+  EXPECT_LT(misfit(rec.t.size() - 1), 0.2 * spec.amplitude);
+  EXPECT_NEAR(height / (2.0 * spec.amplitude), 1.0, 0.10);
 }
 
 TEST(DampingZone, ReflectsLessThanTenPercent) {
