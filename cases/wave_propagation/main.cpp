@@ -7,7 +7,7 @@
 // density_diffusion (0|1), shifting (0|1: particle_shifting), shifting_coefficient,
 // shifting_cap, shifting_r, predictor_fraction, period, depth, amplitude (periodic) or
 // height (flume), wavelengths, theory, kappa, maker_start, maker_length, bottom_gap,
-// ramp_up, forcing_end, gain, floor (periodic: walls|mirror), length, damping_start, damping_k_max, gauges (comma
+// ramp_up, forcing_end, gain, floor (periodic: walls|mirror), initial_wave (periodic: 0|1), length, damping_start, damping_k_max, gauges (comma
 // list of x), end, interval, window (periods averaged at the end), threads;
 // active correction: control_gauges (comma list of x), control_start, control_periods,
 // control_beta, control_stop.
@@ -129,6 +129,7 @@ int main(int argc, char** argv) {
       s.forcing_end = a.get("forcing_end", s.forcing_end);
       s.gain = a.get("gain", s.gain);
       s.floor = a.str("floor", s.floor);
+      s.initial_wave = a.get("initial_wave", 0.0) != 0.0;
       if (a.kv.count("gauges")) s.gauges = numberList(a.str("gauges", ""));
       s.control = controlOf(a);
       tank = cases::buildPeriodicWaveTank(s);
@@ -165,7 +166,8 @@ int main(int argc, char** argv) {
     if (!out.empty()) {
       csv.open(out);
       energy.open(out + ".energy");
-      energy << "t,kinetic_J_per_m\n";
+      energy << "t,kinetic_J_per_m,potential_J_per_m,elastic_J_per_m,momentum_x_kg_per_s,max_speed_m_per_s,y_of_max_speed_m\n";
+      energy.precision(10);
       csv << "# " << kind << " T=" << tank.period << " depth=" << tank.depth << " lambda=" << tank.wavelength
           << " a=" << tank.amplitude << " dx=" << tank.sim->setup().dx << " particles=" << f.size()
           << " method=" << tank.sim->setup().method.name << "\n";
@@ -187,7 +189,17 @@ int main(int argc, char** argv) {
       if (!csv.is_open()) return;
       // Kinetic energy per metre of width: a progressive linear wave holds rho g H^2 L / 16,
       // so sqrt(KE) falls like the height if the height's loss is a real energy loss.
-      energy << r.t.back() << "," << tank.sim->calcEnergy().kinetic << "\n";
+      const auto e = tank.sim->calcEnergy();
+      // Horizontal momentum per metre (nothing changes it in a periodic tank once the
+      // forcing stops) and the fastest particle (where a splash or a blow-up starts).
+      double px = 0.0, v2max = 0.0;
+      std::size_t fastest = 0;
+      for (std::size_t i = 0; i < f.size(); ++i) {
+        px += f.m[i] * f.v[i][0];
+        if (f.v[i].squaredNorm() > v2max) { v2max = f.v[i].squaredNorm(); fastest = i; }
+      }
+      energy << r.t.back() << "," << e.kinetic << "," << e.potential << "," << e.elastic << "," << px << ","
+             << std::sqrt(v2max) << "," << f.r[fastest][1] << "\n";
       csv << r.t.back();
       for (const auto& e : r.eta) csv << "," << e.back();
       csv << "\n";
