@@ -97,6 +97,8 @@ def decay(path, t0, t1=None):
     cg, _ = group_speed(period, depth)
     rows = period_heights(t, eta, period, t0)
     first = [h for _, h in first_harmonic_heights(t, eta, period, t0)]
+    if not rows:
+        raise SystemExit(f"{path}: no whole period of {period:.4g} s between t0 = {t0} s and the end {t[-1]:.4g} s")
     h0 = rows[0][1]
     print(f"# {path}: T = {period:.4g} s, depth = {depth:.4g} m, lambda = {lam:.4g} m, c_g = {cg:.4g} m/s, "
           f"dx = {meta['dx']:.4g} m, {int(meta['particles'])} particles, {meta['steps']:.0f} steps, "
