@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <complex>
-#include <functional>
 #include <Eigen/Dense>
 #include <stdexcept>
 #include <moorsph/fluid/box_geometry.hpp>
@@ -66,47 +65,53 @@ void addController(WaveTank& tank, const WaveTankControl& control, double height
   }
 }
 
-// The wave a periodic tank makes or starts with: elevation eta(x, t) and velocity
-// (x, height above the floor, t).
-struct WaveField {
-  std::function<double(double, double)> elevation;
-  fluid::ForcingRegion<2>::TargetField velocity;
-};
-
-WaveField makeWaveField(const std::string& theory, double amplitude, double period, double depth) {
+// The velocity field of the wave a periodic tank makes or starts with, (x, height above
+// the floor, t) -> velocity.
+fluid::ForcingRegion<2>::TargetField makeWaveVelocity(const std::string& theory, double amplitude, double period,
+                                                      double depth) {
   if (theory == "stokes2") {
     const auto w = std::make_shared<fluid::waves::Stokes2Wave>(amplitude, period, depth, kG);
-    return {[w](double x, double t) { return w->elevation(x, t); },
-            [w](double x, double y, double t) { return w->velocity(x, y, t); }};
+    return [w](double x, double y, double t) { return w->velocity(x, y, t); };
   }
   if (theory == "airy") {
     const auto w = std::make_shared<fluid::waves::AiryWave>(amplitude, period, depth, kG);
-    return {[w](double x, double t) { return w->elevation(x, t); },
-            [w](double x, double y, double t) { return w->velocity(x, y, t); }};
+    return [w](double x, double y, double t) { return w->velocity(x, y, t); };
   }
   throw std::invalid_argument("periodic wave tank: theory must be 'airy' or 'stokes2', not '" + theory + "'");
 }
 
-// The water already carrying the wave at t = 0 (no maker, so nothing but the scheme acts
-// on it afterwards): each column of the square lattice is stretched to the local surface,
-// y = y0 (d + eta)/d, and each particle gets the wave's velocity and the linear wave's
-// pressure rho0 g (d - y) + rho0 g eta cosh(k y0)/cosh(k d) at its unstretched height
-// y0, which vanishes at the surface (y0 = d) exactly. Mass = rho x the stretched cell.
-void fillWithWave(fluid::FluidParticles<2>& water, const WaveField& wave, double k, double length, double depth,
-                  double dx, const fluid::TaitEos& eos) {
+// The water already carrying the wave eta = a cos(k x) at t = 0 (no maker, so nothing but
+// the scheme acts on it afterwards). Each particle of the square lattice at (x0, y0) is
+// moved by the linear wave's orbital displacement (e.g. Dean & Dalrymple 1991, sec. 4.4)
+//   xi = -a cosh(k y0)/sinh(k d) sin(k x0),   zeta = a sinh(k y0)/sinh(k d) cos(k x0),
+// plus the second-order rise of the mean positions, Delta = A^2 k sinh(2 k y0)/4 with
+// A = a/sinh(k d), that keeps each row's area (the first-order map shrinks a cell by
+// (A k)^2 cosh(2 k y0)/2 on average; without Delta the still level would sit k a^2 coth(kd)/2
+// = 0.09 a low). Each particle gets the wave's velocity at (x0, y0) and the linear wave's
+// pressure rho0 g ((d - y0) - zeta + a cosh(k y0)/cosh(k d) cos(k x0)), zero on the
+// surface; mass = rho x its mapped cell's area (the map's Jacobian), equal along x to
+// 0.1 (ka)^2. (Columns stretched to the surface, tried first, made the masses under crests
+// and troughs 2 a/d = 20% apart, and that wave went unstable after 5 wavelengths.)
+// Positions are second order in the mean only: a Stokes wave starts with the Airy surface
+// and the Stokes velocity.
+void fillWithWave(fluid::FluidParticles<2>& water, const fluid::ForcingRegion<2>::TargetField& velocity,
+                  double amplitude, double k, double length, double depth, double dx, const fluid::TaitEos& eos) {
   const int columns = static_cast<int>(std::lround(length / dx));
   const int rows = static_cast<int>(std::lround(depth / dx));
+  const double A = amplitude / std::sinh(k * depth), Ak = A * k;
   for (int i = 0; i < columns; ++i) {
-    const double x = (i + 0.5) * dx;
-    const double eta = wave.elevation(x, 0.0);
-    const double stretch = (depth + eta) / depth;
+    const double x0 = (i + 0.5) * dx, c = std::cos(k * x0), s = std::sin(k * x0);
     for (int j = 0; j < rows; ++j) {
-      const double y0 = (j + 0.5) * dx;
-      const double y = y0 * stretch;
-      const double p = eos.rho0() * kG * ((depth - y) + eta * std::cosh(k * y0) / std::cosh(k * depth));
+      const double y0 = (j + 0.5) * dx, ch = std::cosh(k * y0), sh = std::sinh(k * y0);
+      const double zeta = A * sh * c;
+      const double x = x0 - A * ch * s, y = y0 + zeta + 0.25 * A * Ak * std::sinh(2.0 * k * y0);
+      // Jacobian of (x0, y0) -> (x, y).
+      const double area = (1.0 - Ak * ch * c) * (1.0 + Ak * ch * c + 0.5 * Ak * Ak * std::cosh(2.0 * k * y0)) -
+                          (Ak * sh * s) * (Ak * sh * s);
+      const double p = eos.rho0() * kG * ((depth - y0) - zeta + amplitude * ch / std::cosh(k * depth) * c);
       const double rho = eos.density(p);
-      const Eigen::Vector2d v = wave.velocity(x, y0, 0.0);
-      water.add(Vec2(x, y), Vec2(v[0], v[1]), rho, rho * dx * dx * stretch);
+      const Eigen::Vector2d v = velocity(x0, y0, 0.0);
+      water.add(Vec2(std::fmod(x + length, length), y), Vec2(v[0], v[1]), rho, rho * dx * dx * area);
     }
   }
 }
@@ -141,9 +146,9 @@ WaveTank buildPeriodicWaveTank(const PeriodicWaveTankSpec& spec) {
   setup.domain.periodic = {true, false};
   const fluid::TaitEos eos(setup.rho0, setup.sound_speed, setup.method.gamma);
   fluid::FluidParticles<2> water;
-  const WaveField wave = makeWaveField(spec.theory, spec.amplitude, period, depth);
+  const auto wave_velocity = makeWaveVelocity(spec.theory, spec.amplitude, period, depth);
   if (spec.initial_wave)
-    fillWithWave(water, wave, k, length, depth, dx, eos);
+    fillWithWave(water, wave_velocity, spec.amplitude, k, length, depth, dx, eos);
   else
     fluid::fillBox<2>(water, Vec2(0.0, 0.0), Vec2(length, depth), dx, eos, kG, depth);
   // The floor: one row of boundary particles at y = 0, normals up, spacing dx,
@@ -177,7 +182,7 @@ WaveTank buildPeriodicWaveTank(const PeriodicWaveTankSpec& spec) {
     f.gain = spec.gain;
     // The forcing region is [x_start, x_start + length] without wrapping: a region that
     // covers the tank starts at 0.
-    auto forcing = std::make_unique<fluid::ForcingRegion<2>>(f, wave.velocity, tank.sim->cflDt());
+    auto forcing = std::make_unique<fluid::ForcingRegion<2>>(f, wave_velocity, tank.sim->cflDt());
     tank.forcing = forcing.get();
     tank.sim->addEffect(std::move(forcing));
   }

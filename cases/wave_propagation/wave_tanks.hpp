@@ -52,8 +52,9 @@ struct PeriodicWaveTankSpec {
   double ramp_up = 0.0;        ///< [s], half-cosine ramp of the target
   double forcing_end = std::numeric_limits<double>::infinity();  ///< [s]
   double gain = 1.0;           ///< factor on the target (amplitude calibration)
-  /// Start with the wave already in the water (positions, velocities and pressure of
-  /// `theory` at t = 0) and no forcing region: the scheme's own loss, with no maker.
+  /// Start with the wave already in the water (particles at the linear wave's orbital
+  /// displacement, the velocity of `theory` and the linear wave's pressure at t = 0) and no
+  /// forcing region: the scheme's own loss, with no maker.
   bool initial_wave = false;
   /// "walls": one row of boundary particles; "mirror": the mirror_floor effect (images).
   std::string floor = "walls";
