@@ -118,6 +118,16 @@ void fillWithWave(fluid::FluidParticles<2>& water, const fluid::ForcingRegion<2>
 
 }  // namespace
 
+WaveTankFluid lowDissipationWaveFluid(double dx) {
+  WaveTankFluid f;
+  f.dx = dx;
+  f.method.h_factor = 2.0;
+  f.method.predictor_fraction = 0.55;  // 0.5 lets particle noise grow (docs/stability.md 3h)
+  f.method.density_diffusion_form = fluid::DensityDiffusionForm::Renormalised;
+  f.effects = {"pressure", "viscosity", "gravity", "walls", "density_diffusion"};
+  return f;
+}
+
 WaveTank buildPeriodicWaveTank(const PeriodicWaveTankSpec& spec) {
   if (spec.wavelengths < 1) throw std::invalid_argument("periodic wave tank: at least one wavelength");
   const double hf = spec.fluid.method.h_factor;

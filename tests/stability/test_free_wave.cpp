@@ -2,7 +2,7 @@
 // settings (h = 2 dx, renormalised density diffusion, no XSPH, mirror floor; docs/
 // validation/wave-propagation.md, session 16). The wave is put in the water at t = 0
 // (initial_wave: orbital displacement, Airy velocity and pressure) and nothing acts on
-// it afterwards, so nothing may add energy. At 3.6 particles per height (1,600
+// it afterwards, so nothing may add energy. At 4 particles per height (1,600
 // particles) it runs 6.5 s = 7.8 periods. Asserted:
 //  - the total energy (kinetic + potential + elastic) never rises more than 0.01 J/m
 //    (0.3% of the wave's energy rho g a^2 lambda / 2 = 3.07 J/m) above its lowest value
@@ -28,11 +28,7 @@ using namespace moorsph;
 
 TEST(StabilityFreeWave, WaveLeftAloneGainsNoEnergy) {
   cases::PeriodicWaveTankSpec spec;  // lambda = 1.0 m, d = 0.25 m, kd = 1.57
-  spec.fluid.dx = 0.0125;
-  spec.fluid.method.h_factor = 2.0;
-  spec.fluid.method.predictor_fraction = 0.55;
-  spec.fluid.method.density_diffusion_form = fluid::DensityDiffusionForm::Renormalised;
-  spec.fluid.effects = {"pressure", "viscosity", "gravity", "walls", "density_diffusion"};
+  spec.fluid = cases::lowDissipationWaveFluid(0.0125);
   spec.floor = "mirror";
   spec.amplitude = 0.025;
   spec.initial_wave = true;

@@ -78,11 +78,7 @@ TEST(WavePropagation, FreeWaveKeepsTheDispersionPeriod) {
 
 TEST(WavePropagation, LowDissipationSettingsKeepTheHeight) {
   cases::PeriodicWaveTankSpec spec;
-  spec.fluid.dx = 0.0125;
-  spec.fluid.method.h_factor = 2.0;
-  spec.fluid.method.predictor_fraction = 0.55;
-  spec.fluid.method.density_diffusion_form = fluid::DensityDiffusionForm::Renormalised;
-  spec.fluid.effects = {"pressure", "viscosity", "gravity", "walls", "density_diffusion"};
+  spec.fluid = cases::lowDissipationWaveFluid(0.0125);
   spec.floor = "mirror";
   spec.amplitude = 0.025;
   spec.ramp_up = 1.0;

@@ -109,11 +109,7 @@ TEST(ForcingRegion, MakesTheRequestedAmplitude) {
 
 TEST(PeriodicWaveTank, InitialWaveTravelsAtThePhaseSpeed) {
   cases::PeriodicWaveTankSpec spec;  // lambda = 1.0 m, kd = 1.57, H/lambda = 0.05
-  spec.fluid.dx = 0.0125;            // adjusted to 0.0139 m: 3.6 particles per height
-  spec.fluid.method.predictor_fraction = 0.55;
-  spec.fluid.method.h_factor = 2.0;
-  spec.fluid.method.density_diffusion_form = fluid::DensityDiffusionForm::Renormalised;
-  spec.fluid.effects = {"pressure", "viscosity", "gravity", "walls", "density_diffusion"};  // no XSPH
+  spec.fluid = cases::lowDissipationWaveFluid(0.0125);  // 4 particles per height
   spec.floor = "mirror";
   spec.amplitude = 0.025;
   spec.initial_wave = true;
