@@ -89,8 +89,8 @@ fluid::ForcingRegion<2>::TargetField makeWaveVelocity(const std::string& theory,
 // (A k)^2 cosh(2 k y0)/2 on average; without Delta the still level would sit k a^2 coth(kd)/2
 // = 0.09 a low). Each particle gets the wave's velocity at (x0, y0) and the linear wave's
 // pressure rho0 g ((d - y0) - zeta + a cosh(k y0)/cosh(k d) cos(k x0)), zero on the
-// surface; mass = rho x its mapped cell's area (the map's Jacobian), equal along x to
-// 0.1 (ka)^2. (Columns stretched to the surface, tried first, made the masses under crests
+// surface; mass = rho x its mapped cell's area (the map's Jacobian), which varies along x
+// by (ka)^2/(2 sinh^2 kd) only (0.1 (ka)^2 at kd = 1.57). (Columns stretched to the surface, tried first, made the masses under crests
 // and troughs 2 a/d = 20% apart, and that wave went unstable after 5 wavelengths.)
 // Positions are second order in the mean only: a Stokes wave starts with the Airy surface
 // and the Stokes velocity.
