@@ -41,4 +41,6 @@ if [ "$3" = fine ]; then
   run h3_fine_midpoint dx=0.005 $M h_factor=3 end=14      # dx 5.56 mm, 9 per height; unstable from 10.5 s
   run h25_fine dx=0.005 $S h_factor=2.5 end=16
   run h3_fine dx=0.005 $S h_factor=3 end=16
+  run h3_fine_theta052 dx=0.005 $R predictor_fraction=0.52 h_factor=3 end=16
+  run h3_fine_delta02 dx=0.005 $M dd_delta=0.2 h_factor=3 end=16
 fi
