@@ -172,14 +172,14 @@ void FluidSimulation<D>::step() {
   {
     PhaseTimers::Scope timing(timers_, phase_integrate_);
     predict(predicted_dt);
-    for (auto& e : effects_) e->constrain(fluid_);
+    for (auto& e : effects_) e->constrain(fluid_, StepStage::Predicted);
   }
   for (auto& e : effects_) e->advanceTo(time_ + predicted_dt, StepStage::Predicted);
   evaluateRates(time_ + predicted_dt, false);
   {
     PhaseTimers::Scope timing(timers_, phase_integrate_);
     correct(dt);
-    for (auto& e : effects_) e->constrain(fluid_);
+    for (auto& e : effects_) e->constrain(fluid_, StepStage::Corrected);
   }
   time_ += dt;
   dt_ = dt;

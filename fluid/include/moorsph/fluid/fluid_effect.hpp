@@ -43,9 +43,10 @@ class FluidEffect {
   /// reactions of the last evaluation belong to the predicted state when stage is
   /// Corrected (see coupling/).
   virtual void advanceTo(double /*t*/, StepStage /*stage*/) {}
-  /// Enforce a constraint on the state just integrated (after the predictor and after
-  /// the corrector), e.g. keep particles on the fluid side of a mirror plane.
-  virtual void constrain(FluidParticles<D>& /*fluid*/) {}
+  /// Enforce a constraint on the state just integrated: `stage` is Predicted after the
+  /// predictor, Corrected after the corrector (e.g. keep particles on the fluid side of
+  /// a mirror plane).
+  virtual void constrain(FluidParticles<D>& /*fluid*/, StepStage /*stage*/) {}
 };
 
 }  // namespace moorsph::fluid
