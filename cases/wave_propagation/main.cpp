@@ -7,7 +7,7 @@
 // density_diffusion (0|1), shifting (0|1: particle_shifting), shifting_coefficient,
 // shifting_cap, shifting_r, predictor_fraction, period, depth, amplitude (periodic) or
 // height (flume), wavelengths, theory, kappa, maker_start, maker_length, bottom_gap,
-// ramp_up, forcing_end, gain, floor (periodic: walls|mirror), initial_wave (periodic: 0|1), length, damping_start, damping_k_max, gauges (comma
+// ramp_up, forcing_end, gain, floor (walls|mirror), initial_wave (periodic: 0|1), length, damping_start, damping_k_max, gauges (comma
 // list of x), end, interval, window (periods averaged at the end), threads;
 // active correction: control_gauges (comma list of x), control_start, control_periods,
 // control_beta, control_stop.
@@ -144,6 +144,7 @@ int main(int argc, char** argv) {
       s.gain = a.get("gain", s.gain);
       s.damping_start = a.get("damping_start", s.damping_start);
       s.damping_k_max = a.get("damping_k_max", s.damping_k_max);
+      s.floor = a.str("floor", s.floor);
       s.gauges = numberList(a.str("gauges", "0.5,1.0,1.5"));
       s.control = controlOf(a);
       tank = cases::buildPistonFlume(s);
@@ -166,7 +167,7 @@ int main(int argc, char** argv) {
     if (!out.empty()) {
       csv.open(out);
       energy.open(out + ".energy");
-      energy << "t,kinetic_J_per_m,potential_J_per_m,elastic_J_per_m,momentum_x_kg_per_s,max_speed_m_per_s,y_of_max_speed_m\n";
+      energy << "t,kinetic_J_per_m,potential_J_per_m,elastic_J_per_m,momentum_x_kg_per_s,max_speed_m_per_s,x_of_max_speed_m,y_of_max_speed_m\n";
       energy.precision(10);
       csv << "# " << kind << " T=" << tank.period << " depth=" << tank.depth << " lambda=" << tank.wavelength
           << " a=" << tank.amplitude << " dx=" << tank.sim->setup().dx << " particles=" << f.size()
@@ -199,7 +200,7 @@ int main(int argc, char** argv) {
         if (f.v[i].squaredNorm() > v2max) { v2max = f.v[i].squaredNorm(); fastest = i; }
       }
       energy << r.t.back() << "," << e.kinetic << "," << e.potential << "," << e.elastic << "," << px << ","
-             << std::sqrt(v2max) << "," << f.r[fastest][1] << "\n";
+             << std::sqrt(v2max) << "," << f.r[fastest][0] << "," << f.r[fastest][1] << "\n";
       csv << r.t.back();
       for (const auto& e : r.eta) csv << "," << e.back();
       csv << "\n";

@@ -214,7 +214,15 @@ WaveTank buildPistonFlume(const PistonFlumeSpec& spec) {
   if (!(spec.damping_start > 0.0 && spec.damping_start < spec.length))
     throw std::invalid_argument("piston flume: the damping zone must start inside the flume");
 
+  if (spec.floor != "walls" && spec.floor != "mirror")
+    throw std::invalid_argument("piston flume: floor must be 'walls' or 'mirror', not '" + spec.floor + "'");
+  const bool mirror_floor = spec.floor == "mirror";
+
   fluid::FluidSetup<2> setup = makeSetup(spec.fluid, dx, depth);
+  if (mirror_floor) {  // the images replace the floor's row; the walls law keeps the piston and end wall
+    setup.effects.push_back("mirror_floor");
+    setup.mirror_floor_height = 0.0;
+  }
   const double h = setup.h();
   const double top = 2.0 * depth;
   setup.domain.lower = Vec2(-4.0 * h, -4.0 * h);
@@ -224,7 +232,8 @@ WaveTank buildPistonFlume(const PistonFlumeSpec& spec) {
   fluid::fillBox<2>(water, Vec2(x_p, 0.0), Vec2(x_end, depth), dx, eos, kG, depth);
   fluid::BoundaryGeometry<2> boundary;
   boundary.addSurface(
-      fluid::sampleBoxSurface<2>(Vec2(0.0, 0.0), Vec2(x_end, top), dx, fluid::openTopTank<2>(), fluid::NormalSide::Inward),
+      fluid::sampleBoxSurface<2>(Vec2(0.0, 0.0), Vec2(x_end, top), dx, fluid::tankFaces<2>(false, mirror_floor),
+                                 fluid::NormalSide::Inward),
       fluid::SurfaceInfo{"flume", false});
   // The plate: the +x face of a thin box, moved rigidly along x.
   const auto plate = fluid::sampleBoxSurface<2>(Vec2(x_p - 2.0 * dx, 0.0), Vec2(x_p, top), dx,

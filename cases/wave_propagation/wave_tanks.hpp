@@ -79,6 +79,8 @@ struct PistonFlumeSpec {
   double gain = 1.0;           ///< factor on the stroke (amplitude calibration)
   double damping_start = 2.0;  ///< [m] from the piston's rest face
   double damping_k_max = 10.0; ///< [1/s]
+  /// "walls": one row of boundary particles; "mirror": the mirror_floor effect (images).
+  std::string floor = "walls";
   std::vector<double> gauges;  ///< gauge x [m] from the piston's rest face
   WaveTankControl control;
 };
