@@ -34,7 +34,7 @@ void readMethod(MapReader& top, SceneConfig& c) {
   fluid::MethodParameters& p = c.method;
   p = fluid::MethodParameters::reference();
   p.h_factor = m.positive("h_factor", p.h_factor, "smoothing length h / dx");
-  if (p.h_factor < 1.0 || p.h_factor > 2.5) m.fail("h_factor", "expected h / dx in [1, 2.5] (reference 1.2)");
+  if (p.h_factor < 1.0 || p.h_factor > 3.0) m.fail("h_factor", "expected h / dx in [1, 3] (reference 1.2)");
   p.cfl = m.positive("cfl", p.cfl, "CFL number");
   if (p.cfl > 1.0) m.fail("cfl", "expected a CFL number in (0, 1] (reference 0.5)");
   p.predictor_fraction = m.positive("predictor_fraction", p.predictor_fraction, "fraction of dt the predictor advances");
