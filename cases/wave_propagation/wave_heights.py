@@ -118,16 +118,20 @@ def decay(path, t0, t1=None):
     return rows
 
 
-def flume(path, t0, t1):
+def flume_heights(path, t0, t1):
+    """(metadata, gauge x, mean height per gauge) over the whole periods in [t0, t1]."""
     meta, t, xs, eta = read(path)
-    period = meta['T']
-    print(f"# {path}: T = {period:.4g} s, requested H = {2 * meta['a']:.4g} m, dx = {meta['dx']:.4g} m")
+    keep = (t >= t0) & (t <= t1)
+    heights = [np.mean([h for _, h in period_heights(t[keep], eta[keep, j:j + 1], meta['T'], t0)])
+               for j in range(len(xs))]
+    return meta, xs, np.array(heights)
+
+
+def flume(path, t0, t1):
+    meta, xs, heights = flume_heights(path, t0, t1)
+    print(f"# {path}: T = {meta['T']:.4g} s, requested H = {2 * meta['a']:.4g} m, dx = {meta['dx']:.4g} m")
     print("# x[m]  H[m]  H/H_requested")
-    n = int((t1 - t0) / period)
-    for j, x in enumerate(xs):
-        rows = period_heights(t[(t >= t0) & (t < t0 + n * period)], eta[(t >= t0) & (t < t0 + n * period), j:j + 1],
-                              period, t0)
-        h = np.mean([r[1] for r in rows])
+    for x, h in zip(xs, heights):
         print(f"{x:7.3f} {h:.5f} {h / (2 * meta['a']):.4f}")
 
 
