@@ -5,7 +5,7 @@
 //
 // Keys (SI units): dx, mu, cfl, h_factor, b_off, boundary_strength, boundary_h_factor, dd_delta, dd_form, no_viscosity (1: drop the term), sound_speed, xsph_form (reference|monaghan), xsph_eps,
 // density_diffusion (0|1), shifting (0|1: particle_shifting), shifting_coefficient,
-// shifting_cap, shifting_r, predictor_fraction, period, depth, amplitude (periodic) or
+// shifting_cap, shifting_r, predictor_fraction, integrator (predictor_corrector|symplectic), period, depth, amplitude (periodic) or
 // height (flume), wavelengths, theory, kappa, maker_start, maker_length, bottom_gap,
 // ramp_up, forcing_end, gain, floor (walls|mirror), initial_wave (periodic: 0|1), length, damping_start, damping_k_max, gauges (comma
 // list of x), end, interval, window (periods averaged at the end), threads;
@@ -73,6 +73,9 @@ cases::WaveTankFluid fluidOf(Args& a) {
   else if (xsph != "reference") throw std::invalid_argument("xsph_form: reference or monaghan");
   f.method.xsph_eps = a.get("xsph_eps", f.method.xsph_eps);
   f.method.predictor_fraction = a.get("predictor_fraction", f.method.predictor_fraction);
+  const std::string integrator = a.str("integrator", "predictor_corrector");
+  if (integrator == "symplectic") f.method.integrator = fluid::Integrator::Symplectic;
+  else if (integrator != "predictor_corrector") throw std::invalid_argument("integrator: predictor_corrector or symplectic");
   f.method.cfl = a.get("cfl", f.method.cfl);
   f.method.h_factor = a.get("h_factor", f.method.h_factor);
   f.method.boundary_offset = a.get("b_off", f.method.boundary_offset);
@@ -89,6 +92,7 @@ cases::WaveTankFluid fluidOf(Args& a) {
   if (a.get("no_viscosity", 0.0) != 0.0) f.effects.erase(f.effects.begin() + 1);
   if (f.method.xsph_eps == 0.0) f.effects.erase(std::find(f.effects.begin(), f.effects.end(), "xsph"));
   if (f.method.xsph_form != fluid::XsphForm::Reference || f.method.predictor_fraction != 1.0 ||
+      f.method.integrator != fluid::Integrator::PredictorCorrector ||
       f.method.cfl != 0.5 || f.method.h_factor != 1.2 ||
       f.effects.size() != 5)
     f.method.name = "reference+options";

@@ -2,7 +2,8 @@
 # Session-16 study (docs/validation/wave-propagation.md, "Session 16"): the mirror-floor
 # settings R of session 8 with a longer smoothing length (h = 2.5 dx, 3 dx), a wave that
 # starts in the water (initial_wave=1, no forcing) to tell the maker's share of the loss,
-# and the predictor study that found the midpoint predictor's instability. Each run also
+# and the predictor study that found the midpoint predictor's instability (session 18:
+# the symplectic integrator's runs). Each run also
 # writes OUTDIR/<name>.csv.energy (kinetic, potential, elastic energy, horizontal
 # momentum, fastest particle): an instability shows there, not in the heights.
 #
@@ -36,6 +37,7 @@ run init_delta02 dx=0.01 $M $I dd_delta=0.2
 run init_theta055 dx=0.01 $S $I
 run init_theta060 dx=0.01 $R $I predictor_fraction=0.6
 run init_theta055_c125 dx=0.0125 $S $I end=9
+run init_symplectic_c125 dx=0.0125 $R integrator=symplectic $I end=9   # session 18
 if [ "$3" = fine ]; then
   run h25_fine_midpoint dx=0.005 $M h_factor=2.5 end=12   # 10 per height; unstable from 7.5 s
   run h3_fine_midpoint dx=0.005 $M h_factor=3 end=14      # dx 5.56 mm, 9 per height; unstable from 10.5 s
@@ -43,4 +45,5 @@ if [ "$3" = fine ]; then
   run h3_fine dx=0.005 $S h_factor=3 end=16
   run h3_fine_theta052 dx=0.005 $R predictor_fraction=0.52 h_factor=3 end=16
   run h3_fine_delta02 dx=0.005 $M dd_delta=0.2 h_factor=3 end=16
+  run h3_fine_symplectic dx=0.005 $R integrator=symplectic h_factor=3 end=16   # session 18
 fi

@@ -37,9 +37,10 @@ struct WaveTankFluid {
   std::vector<std::string> effects{"pressure", "viscosity", "xsph", "gravity", "walls"};
 };
 
-/// The low-dissipation wave settings (docs/validation/wave-propagation.md, sessions 7, 8
-/// and 16): h = 2 dx, predictor fraction 0.55, renormalised density diffusion, no XSPH.
-/// Pair with the tank's floor = "mirror".
+/// The low-dissipation wave settings (docs/validation/wave-propagation.md, sessions 7, 8,
+/// 16 and 18): h = 2 dx, predictor fraction 0.55, renormalised density diffusion, no
+/// XSPH. Pair with the tank's floor = "mirror"; at ~9 particles per wave height and more,
+/// h = 3 dx (method.h_factor) keeps the height better.
 WaveTankFluid lowDissipationWaveFluid(double dx);
 
 /// Periodic tank of whole wavelengths with a forcing region (METHOD.md section 4a).

@@ -53,6 +53,28 @@ class PairForcesImpl final : public PairForces<D> {
 
   std::uint64_t lastInteractions() const override { return interactions_; }
 
+  void continuityRate(FluidContext<D>& ctx, std::vector<double>& out) const override {
+    const FluidParticles<D>& f = ctx.fluid;
+    const NeighbourList& list = ctx.neighbours.fluidFluid();
+    const Domain<D> domain = ctx.setup.domain;
+    const KernelConstants k(ctx.kernel);
+    const std::size_t n = f.size();
+    out.resize(n);
+#pragma omp parallel for schedule(static)
+    for (std::size_t i = 0; i < n; ++i) {
+      const Vec<D> vi = f.v[i];
+      double sum = 0.0;
+      forEachNeighbour(f, list, domain, i, [&](const Neighbour& nb) {
+        const double r2 = nb.rij.squaredNorm();
+        if (r2 >= k.support2) return false;
+        const double t = 2.0 - std::sqrt(r2) * k.inv_h;
+        sum += nb.m * (vi - nb.v).dot(nb.rij) * k.grad_scale * t * t * t;
+        return true;
+      });
+      out[i] = sum;
+    }
+  }
+
   void evaluate(FluidContext<D>& ctx) override {
     FluidParticles<D>& f = ctx.fluid;
     const std::size_t n = f.size();

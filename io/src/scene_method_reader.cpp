@@ -39,6 +39,12 @@ void readMethod(MapReader& top, SceneConfig& c) {
   if (p.cfl > 1.0) m.fail("cfl", "expected a CFL number in (0, 1] (reference 0.5)");
   p.predictor_fraction = m.positive("predictor_fraction", p.predictor_fraction, "fraction of dt the predictor advances");
   if (p.predictor_fraction > 1.0) m.fail("predictor_fraction", "expected a value in (0, 1] (reference 1, midpoint 0.5)");
+  const std::string integrator = m.text("integrator", "predictor_corrector");
+  if (integrator == "symplectic") p.integrator = fluid::Integrator::Symplectic;
+  else if (integrator != "predictor_corrector")
+    m.fail("integrator", "expected 'predictor_corrector' or 'symplectic', got '" + integrator + "'");
+  if (p.integrator == fluid::Integrator::Symplectic && m.has("predictor_fraction") && p.predictor_fraction != 0.5)
+    m.fail("predictor_fraction", "the symplectic integrator's predictor advances dt/2: leave predictor_fraction out or set 0.5");
   p.force_dt_factor = m.positive("force_dt_factor", p.force_dt_factor, "factor of the force time-step bound");
   p.gamma = m.positive("gamma", p.gamma, "Tait exponent");
   p.xsph_eps = m.positive("xsph_eps", p.xsph_eps, "XSPH epsilon", true);
@@ -81,7 +87,7 @@ void readMethod(MapReader& top, SceneConfig& c) {
   // A run guard, not part of the method: it does not make the method "reference+options".
   p.min_dt_fraction = m.positive("min_dt_fraction", p.min_dt_fraction, "smallest time step / CFL step before the run stops", true);
   if (p.min_dt_fraction >= 1.0) m.fail("min_dt_fraction", "expected a fraction in [0, 1) (0 disables the guard; default 1e-3)");
-  const bool changed = m.has("particle_shifting") || m.has("h_factor") || m.has("cfl") || m.has("predictor_fraction") || m.has("xsph_form") ||
+  const bool changed = m.has("particle_shifting") || m.has("h_factor") || m.has("cfl") || m.has("predictor_fraction") || m.has("integrator") || m.has("xsph_form") ||
                        m.has("b_off") || m.has("density_diffusion") || m.has("force_dt_factor") || m.has("gamma") ||
                        m.has("xsph_eps") || m.has("viscosity_xi") || m.has("viscosity_beta_factor") ||
                        m.has("boundary_strength") || m.has("skin_factor") ||

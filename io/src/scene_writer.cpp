@@ -44,7 +44,8 @@ std::string resolvedSceneYaml(const SceneConfig& c) {
   e << YAML::Key << "method" << YAML::Value << YAML::BeginMap;
   e << YAML::Key << "preset" << YAML::Value << "reference";
   e << YAML::Key << "h_factor" << YAML::Value << m.h_factor << YAML::Key << "cfl" << YAML::Value << m.cfl;
-  e << YAML::Key << "predictor_fraction" << YAML::Value << m.predictor_fraction;
+  if (m.integrator == fluid::Integrator::Symplectic) e << YAML::Key << "integrator" << YAML::Value << "symplectic";
+  else e << YAML::Key << "predictor_fraction" << YAML::Value << m.predictor_fraction;
   e << YAML::Key << "force_dt_factor" << YAML::Value << m.force_dt_factor << YAML::Key << "gamma" << YAML::Value << m.gamma;
   e << YAML::Key << "xsph_eps" << YAML::Value << m.xsph_eps;
   e << YAML::Key << "xsph_form" << YAML::Value << (m.xsph_form == fluid::XsphForm::Monaghan ? "monaghan" : "reference");

@@ -429,6 +429,22 @@ TEST(SceneLoader, WallLawLength) {
   EXPECT_TRUE(errorOf(std::string(kBase) + "method:\n  h_factor: 2\n  b_off: 1.3\n").empty());
 }
 
+// The integrator: predictor-corrector by default, symplectic on request (written back,
+// and the predictor's fraction is its own half step); a wrong name or a fraction other
+// than 0.5 beside it names the key.
+TEST(SceneLoader, Integrator) {
+  EXPECT_EQ(io::loadSceneText(kBase, "s.yaml").method.integrator, fluid::Integrator::PredictorCorrector);
+  const auto c = io::loadSceneText(std::string(kBase) + "method:\n  integrator: symplectic\n", "s.yaml");
+  EXPECT_EQ(c.method.integrator, fluid::Integrator::Symplectic);
+  EXPECT_EQ(c.method.name, "reference+options");
+  EXPECT_EQ(io::loadSceneText(io::resolvedSceneYaml(c), "resolved.yaml").method.integrator, fluid::Integrator::Symplectic);
+  const std::string typo = errorOf(std::string(kBase) + "method:\n  integrator: leapfrog\n");
+  EXPECT_NE(typo.find("'method.integrator'"), std::string::npos) << typo;
+  const std::string fraction = errorOf(std::string(kBase) + "method:\n  integrator: symplectic\n  predictor_fraction: 0.7\n");
+  EXPECT_NE(fraction.find("'method.predictor_fraction'"), std::string::npos) << fraction;
+  EXPECT_TRUE(errorOf(std::string(kBase) + "method:\n  integrator: symplectic\n  predictor_fraction: 0.5\n").empty());
+}
+
 // The wall law's form: reference by default, conservative on request, written back, and
 // a misspelt form names the key and its line.
 TEST(SceneLoader, WallLawForm) {

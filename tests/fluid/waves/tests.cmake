@@ -22,3 +22,11 @@ if(TARGET moorsph_wave_tanks)
     LIBS moorsph_wave_tanks
     LABELS slow)
 endif()
+# Issue 6's slower validation: 10 wavelengths at ~9 particles per height (~31 CPU minutes).
+if(TARGET moorsph_wave_tanks)
+  moorsph_add_gtest(NAME test_wave_propagation_10_wavelengths
+    SOURCES ${CMAKE_CURRENT_LIST_DIR}/test_wave_propagation_10_wavelengths.cpp
+    LIBS moorsph_wave_tanks
+    LABELS validation
+    TIMEOUT 5400)
+endif()

@@ -13,6 +13,19 @@
 // midpoint rule (1 + z + z^2/2, |.|^2 = 1 + x^4/4): second order but it amplifies
 // undamped acoustic modes, so it needs density diffusion (method option).
 //
+// The symplectic option (method.integrator, Stormer-Verlet with the velocity as the
+// momentum): the same predictor at f = 1/2 (r*, rho* half a step on, v* too, for the
+// velocity-dependent terms), the rates there, then
+//   kick:   v^{n+1}   = v^n + dt a*
+//   drift:  r^{n+1}   = r* + dt/2 (v^{n+1} + (dr/dt)* - v*)      (XSPH/shifting part kept)
+//           rho^{n+1} = rho* + dt/2 (D* + C(v^{n+1} - v*))
+// with C the continuity sum alone at r* (linear in the velocity), so the second half
+// of the density's drift sees the new velocity and the density diffusion of the
+// mid-state. For rho' = -alpha v, v' = beta rho (an acoustic mode, (w dt)^2 = z) the
+// step's matrix has determinant exactly 1 and trace 2 - z: neutral for w dt < 2, where
+// the midpoint rule grows by z^2/8 per step (docs/stability.md 3h). One extra pair pass
+// (continuity only) per step.
+//
 // Time step (METHOD.md section 1): dt = min(CFL h/(c_s + 2 xi mu/(h rho0)),
 // force_dt_factor sqrt(h / max|a|)); the second bound matters in impacts.
 #include <memory>
@@ -125,6 +138,8 @@ class FluidSimulation {
   double computeDt() const;
   void predict(double dt);
   void correct(double dt);
+  /// The symplectic integrator's kick and second drift (Integrator::Symplectic).
+  void correctSymplectic(double dt);
   void removeOutflow();
   void checkHealth() const;
 
@@ -134,6 +149,8 @@ class FluidSimulation {
   TaitEos eos_;
   NeighbourSearch<D> neighbours_;
   std::unique_ptr<PairForces<D>> pairs_;
+  std::vector<Vec<D>> transport_;        ///< correctSymplectic's scratch: (dr/dt)* - v*
+  std::vector<double> continuity_change_;  ///< correctSymplectic's scratch: C(v^{n+1} - v*)
   std::vector<std::unique_ptr<FluidEffect<D>>> effects_;
   Walls<D>* walls_ = nullptr;  // owned by effects_
   std::unique_ptr<Outflow<D>> outflow_;

@@ -12,6 +12,7 @@
 // atomics; it counts the pairs within 2h it evaluated ("neighbour interactions").
 #include <cstdint>
 #include <memory>
+#include <vector>
 #include <moorsph/fluid/fluid_effect.hpp>
 
 namespace moorsph::fluid {
@@ -25,6 +26,11 @@ class PairForces {
   virtual void evaluate(FluidContext<D>& ctx) = 0;
   /// Pairs within 2h evaluated by the last call.
   virtual std::uint64_t lastInteractions() const = 0;
+  /// The continuity term of drho/dt alone, sum_j m_j (v_i - v_j) . grad_i W_ij (mirror
+  /// images included), at the current positions and velocities, into `out`; no density
+  /// diffusion. Uses the neighbour list and image states of the last evaluate(), so
+  /// the positions must be those of that evaluation (the symplectic integrator's drift).
+  virtual void continuityRate(FluidContext<D>& ctx, std::vector<double>& out) const = 0;
 };
 
 /// Build the pair loop for the effects `setup` names. Throws std::invalid_argument
