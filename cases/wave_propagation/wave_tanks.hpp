@@ -38,7 +38,7 @@ struct WaveTankFluid {
 };
 
 /// The low-dissipation wave settings (docs/validation/wave-propagation.md, sessions 7, 8,
-/// 16 and 18): h = 2 dx, predictor fraction 0.55, renormalised density diffusion, no
+/// 16 and 18): h = 2 dx, the symplectic integrator, renormalised density diffusion, no
 /// XSPH. Pair with the tank's floor = "mirror"; at ~9 particles per wave height and more,
 /// h = 3 dx (method.h_factor) keeps the height better.
 WaveTankFluid lowDissipationWaveFluid(double dx);

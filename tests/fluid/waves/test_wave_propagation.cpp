@@ -10,13 +10,13 @@
 // 10 wavelengths issue 6 asks for, so the loss is reported, not asserted;
 // see the study for its causes.
 //
-// The second test runs the low-dissipation settings of the session-7/8/16 studies (h = 2 dx,
-// predictor fraction 0.55, no XSPH, renormalised density diffusion, mirror floor) at 4
-// particles per height: an inviscid wave keeps its height (water's viscosity takes 1e-4
-// of it per wavelength), and these settings must keep 95% of it over 1.27 wavelengths;
-// they keep 97.3% (97.6% with the midpoint predictor, which lets particle noise grow over
-// longer runs; 95.0% with a floor of wall particles, the reference method 71%;
-// docs/validation/wave-propagation.md).
+// The second test runs the low-dissipation settings of the session-7/8/16/18 studies
+// (h = 2 dx, the symplectic integrator, no XSPH, renormalised density diffusion, mirror
+// floor) at 4 particles per height: an inviscid wave keeps its height (water's viscosity
+// takes 1e-4 of it per wavelength), and these settings must keep 95% of it over 1.27
+// wavelengths; they keep 97.5% (97.3% with predictor fraction 0.55; 97.6% with the
+// midpoint predictor, which lets particle noise grow over longer runs; 95.0% with a floor
+// of wall particles, the reference method 71%; docs/validation/wave-propagation.md).
 #include <gtest/gtest.h>
 
 #include <cmath>
