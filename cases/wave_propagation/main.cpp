@@ -68,14 +68,12 @@ cases::WaveTankFluid fluidOf(Args& a) {
   f.dx = a.get("dx", f.dx);
   f.mu = a.get("mu", f.mu);
   f.sound_speed = a.get("sound_speed", 0.0);
-  const std::string xsph = a.str("xsph_form", "reference");
-  if (xsph == "monaghan") f.method.xsph_form = fluid::XsphForm::Monaghan;
-  else if (xsph != "reference") throw std::invalid_argument("xsph_form: reference or monaghan");
+  if (!fluid::optionFromName(fluid::kXsphFormNames, a.str("xsph_form", "reference"), f.method.xsph_form))
+    throw std::invalid_argument("xsph_form: " + fluid::optionNames(fluid::kXsphFormNames));
   f.method.xsph_eps = a.get("xsph_eps", f.method.xsph_eps);
   f.method.predictor_fraction = a.get("predictor_fraction", f.method.predictor_fraction);
-  const std::string integrator = a.str("integrator", "predictor_corrector");
-  if (integrator == "symplectic") f.method.integrator = fluid::Integrator::Symplectic;
-  else if (integrator != "predictor_corrector") throw std::invalid_argument("integrator: predictor_corrector or symplectic");
+  if (!fluid::optionFromName(fluid::kIntegratorNames, a.str("integrator", "predictor_corrector"), f.method.integrator))
+    throw std::invalid_argument("integrator: " + fluid::optionNames(fluid::kIntegratorNames));
   f.method.cfl = a.get("cfl", f.method.cfl);
   f.method.h_factor = a.get("h_factor", f.method.h_factor);
   f.method.boundary_offset = a.get("b_off", f.method.boundary_offset);
@@ -83,7 +81,7 @@ cases::WaveTankFluid fluidOf(Args& a) {
   f.method.boundary_h_factor = a.get("boundary_h_factor", f.method.boundary_h_factor);
   f.method.density_diffusion_delta = a.get("dd_delta", f.method.density_diffusion_delta);
   const std::string dd_form = a.str("dd_form", "fourtakas");
-  if (!fluid::densityDiffusionFormFromName(dd_form, f.method.density_diffusion_form)) throw std::invalid_argument("dd_form: fourtakas, molteni_colagrossi or renormalised");
+  if (!fluid::densityDiffusionFormFromName(dd_form, f.method.density_diffusion_form)) throw std::invalid_argument("dd_form: " + fluid::optionNames(fluid::kDensityDiffusionFormNames));
   if (a.get("density_diffusion", 0.0) != 0.0) f.effects.push_back("density_diffusion");
   if (a.get("shifting", 0.0) != 0.0) f.effects.push_back("particle_shifting");
   f.method.shifting.coefficient = a.get("shifting_coefficient", f.method.shifting.coefficient);

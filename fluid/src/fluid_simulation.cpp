@@ -179,7 +179,7 @@ void FluidSimulation<D>::correctSymplectic(double dt) {
   pairs_->continuityRate(ctx, continuity_change_);
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i) {
-    const Vec<D> v_new = f.v_start[i] + dt * f.dvdt[i];
+    const Vec<D> v_new = f.v_start[i] + dt * f.dvdt[i];  // recomputed: cheaper than a scratch array
     f.v[i] = v_new;
     f.r[i] = domain.wrap(f.r[i] + 0.5 * dt * (v_new + transport_[i]));
     f.rho[i] += 0.5 * dt * (f.drhodt[i] + continuity_change_[i]);

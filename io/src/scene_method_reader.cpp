@@ -39,20 +39,18 @@ void readMethod(MapReader& top, SceneConfig& c) {
   if (p.cfl > 1.0) m.fail("cfl", "expected a CFL number in (0, 1] (reference 0.5)");
   p.predictor_fraction = m.positive("predictor_fraction", p.predictor_fraction, "fraction of dt the predictor advances");
   if (p.predictor_fraction > 1.0) m.fail("predictor_fraction", "expected a value in (0, 1] (reference 1, midpoint 0.5)");
-  const std::string integrator = m.text("integrator", "predictor_corrector");
-  if (integrator == "symplectic") p.integrator = fluid::Integrator::Symplectic;
-  else if (integrator != "predictor_corrector")
-    m.fail("integrator", "expected 'predictor_corrector' or 'symplectic', got '" + integrator + "'");
+  const std::string integrator = m.text("integrator", fluid::optionName(fluid::kIntegratorNames, p.integrator));
+  if (!fluid::optionFromName(fluid::kIntegratorNames, integrator, p.integrator))
+    m.fail("integrator", "expected " + fluid::optionNames(fluid::kIntegratorNames) + ", got '" + integrator + "'");
   if (p.integrator == fluid::Integrator::Symplectic && m.has("predictor_fraction") && p.predictor_fraction != 0.5)
     m.fail("predictor_fraction", "the symplectic integrator's predictor advances dt/2: leave predictor_fraction out or set 0.5");
   p.force_dt_factor = m.positive("force_dt_factor", p.force_dt_factor, "factor of the force time-step bound");
   p.gamma = m.positive("gamma", p.gamma, "Tait exponent");
   p.xsph_eps = m.positive("xsph_eps", p.xsph_eps, "XSPH epsilon", true);
   if (p.xsph_eps > 1.0) m.fail("xsph_eps", "expected a value in [0, 1] (reference 0.5)");
-  const std::string form = m.text("xsph_form", "reference");
-  if (form == "reference") p.xsph_form = fluid::XsphForm::Reference;
-  else if (form == "monaghan") p.xsph_form = fluid::XsphForm::Monaghan;
-  else m.fail("xsph_form", "expected 'reference' or 'monaghan', got '" + form + "'");
+  const std::string form = m.text("xsph_form", fluid::optionName(fluid::kXsphFormNames, p.xsph_form));
+  if (!fluid::optionFromName(fluid::kXsphFormNames, form, p.xsph_form))
+    m.fail("xsph_form", "expected " + fluid::optionNames(fluid::kXsphFormNames) + ", got '" + form + "'");
   p.viscosity_xi = m.positive("viscosity_xi", p.viscosity_xi, "Cleary xi");
   p.viscosity_beta_factor = m.positive("viscosity_beta_factor", p.viscosity_beta_factor, "beta / dx", true);
   p.boundary_h_factor = m.positive("boundary_h_factor", p.h_factor, "wall law length h_w / dx");
@@ -69,16 +67,15 @@ void readMethod(MapReader& top, SceneConfig& c) {
     m.fail("b_off", msg);
   }
   p.boundary_strength = m.positive("boundary_strength", p.boundary_strength, "wall force scale");
-  const std::string wall_law = m.text("boundary_force", "reference");
-  if (wall_law == "reference") p.boundary_force_form = fluid::BoundaryForceForm::Reference;
-  else if (wall_law == "conservative") p.boundary_force_form = fluid::BoundaryForceForm::Conservative;
-  else m.fail("boundary_force", "expected 'reference' or 'conservative', got '" + wall_law + "'");
+  const std::string wall_law = m.text("boundary_force", fluid::optionName(fluid::kBoundaryForceFormNames, p.boundary_force_form));
+  if (!fluid::optionFromName(fluid::kBoundaryForceFormNames, wall_law, p.boundary_force_form))
+    m.fail("boundary_force", "expected " + fluid::optionNames(fluid::kBoundaryForceFormNames) + ", got '" + wall_law + "'");
   p.skin_factor = m.positive("skin_factor", p.skin_factor, "Verlet skin / 2h");
   if (m.has("density_diffusion")) {
     MapReader d(m.child("density_diffusion"), "method.density_diffusion", top.source());
     p.density_diffusion_delta = d.positive("delta", p.density_diffusion_delta, "delta-SPH coefficient");
     const std::string f = d.text("form", "fourtakas");
-    if (!fluid::densityDiffusionFormFromName(f, p.density_diffusion_form)) d.fail("form", "expected 'fourtakas', 'molteni_colagrossi' or 'renormalised', got '" + f + "'");
+    if (!fluid::densityDiffusionFormFromName(f, p.density_diffusion_form)) d.fail("form", "expected " + fluid::optionNames(fluid::kDensityDiffusionFormNames) + ", got '" + f + "'");
     d.finish();
   } else {
     m.child("density_diffusion");

@@ -44,18 +44,18 @@ std::string resolvedSceneYaml(const SceneConfig& c) {
   e << YAML::Key << "method" << YAML::Value << YAML::BeginMap;
   e << YAML::Key << "preset" << YAML::Value << "reference";
   e << YAML::Key << "h_factor" << YAML::Value << m.h_factor << YAML::Key << "cfl" << YAML::Value << m.cfl;
-  if (m.integrator == fluid::Integrator::Symplectic) e << YAML::Key << "integrator" << YAML::Value << "symplectic";
-  else e << YAML::Key << "predictor_fraction" << YAML::Value << m.predictor_fraction;
+  e << YAML::Key << "integrator" << YAML::Value << fluid::optionName(fluid::kIntegratorNames, m.integrator);
+  if (m.integrator == fluid::Integrator::PredictorCorrector)
+    e << YAML::Key << "predictor_fraction" << YAML::Value << m.predictor_fraction;
   e << YAML::Key << "force_dt_factor" << YAML::Value << m.force_dt_factor << YAML::Key << "gamma" << YAML::Value << m.gamma;
   e << YAML::Key << "xsph_eps" << YAML::Value << m.xsph_eps;
-  e << YAML::Key << "xsph_form" << YAML::Value << (m.xsph_form == fluid::XsphForm::Monaghan ? "monaghan" : "reference");
+  e << YAML::Key << "xsph_form" << YAML::Value << fluid::optionName(fluid::kXsphFormNames, m.xsph_form);
   e << YAML::Key << "viscosity_xi" << YAML::Value << m.viscosity_xi;
   e << YAML::Key << "viscosity_beta_factor" << YAML::Value << m.viscosity_beta_factor;
   e << YAML::Key << "b_off" << YAML::Value << m.boundary_offset;
   e << YAML::Key << "boundary_strength" << YAML::Value << m.boundary_strength;
   if (m.boundary_h_factor > 0.0) e << YAML::Key << "boundary_h_factor" << YAML::Value << m.boundary_h_factor;
-  e << YAML::Key << "boundary_force" << YAML::Value
-    << (m.boundary_force_form == fluid::BoundaryForceForm::Conservative ? "conservative" : "reference");
+  e << YAML::Key << "boundary_force" << YAML::Value << fluid::optionName(fluid::kBoundaryForceFormNames, m.boundary_force_form);
   e << YAML::Key << "skin_factor" << YAML::Value << m.skin_factor;
   e << YAML::Key << "density_diffusion" << YAML::Value << YAML::BeginMap;
   e << YAML::Key << "form" << YAML::Value << fluid::densityDiffusionFormName(m.density_diffusion_form);

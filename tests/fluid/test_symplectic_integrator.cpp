@@ -14,7 +14,8 @@
 // apart). Measured: symplectic at most 1.0275 E0, reached within the first 1,000
 // steps and not exceeded over 3,000 (1.012-1.018 at the ends: it oscillates, no
 // trend); midpoint 11 E0 after 200 steps, 2.6e4 E0 after 600 (1.6e6 at 1,000),
-// negative densities at step 1,987.
+// negative densities at step 1,987. The same in 3D (a 0.09 m cube, 729 particles):
+// symplectic at most 1.0204 E0, midpoint 2.4e6 E0 after 1,000 steps.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -35,23 +36,27 @@ struct EnergyRecord {
   double e0 = 0.0, largest = 0.0, last = 0.0;
 };
 
+// The block is 0.2 m square in 2D; in 3D a 0.09 m cube (729 particles, the smallest periodic
+// box the cell grid allows: 3 cells of the interaction radius) keeps the test fast.
+template <int D>
 EnergyRecord runNoise(Integrator integrator) {
-  FluidSetup<2> s;
+  FluidSetup<D> s;
   s.dx = 0.01;
   s.sound_speed = 20.0;
-  s.gravity = Vec<2>::Zero();
+  s.gravity = Vec<D>::Zero();
   s.method.predictor_fraction = 0.5;
   s.method.integrator = integrator;
   s.effects = {"pressure"};
-  s.domain.lower = Vec<2>(0.0, 0.0);
-  s.domain.upper = Vec<2>(0.2, 0.2);
-  s.domain.periodic = {true, true};
-  FluidParticles<2> water;
-  fillBox<2>(water, Vec<2>(0.0, 0.0), Vec<2>(0.2, 0.2), s.dx, TaitEos(s.rho0, s.sound_speed, s.method.gamma), 0.0, 0.2);
+  const double side = D == 2 ? 0.2 : 0.09;
+  s.domain.lower = Vec<D>::Zero();
+  s.domain.upper = Vec<D>::Constant(side);
+  s.domain.periodic.fill(true);
+  FluidParticles<D> water;
+  fillBox<D>(water, s.domain.lower, s.domain.upper, s.dx, TaitEos(s.rho0, s.sound_speed, s.method.gamma), 0.0, side);
   std::mt19937 rng(7);
   std::uniform_real_distribution<double> jitter(-5e-4, 5e-4);
   for (double& rho : water.rho) rho *= 1.0 + jitter(rng);
-  FluidSimulation<2> sim(s, water, BoundaryGeometry<2>{});
+  FluidSimulation<D> sim(s, water, BoundaryGeometry<D>{});
   const auto energy = [&sim] {
     const auto e = sim.calcEnergy();
     return e.kinetic + e.elastic;
@@ -71,15 +76,20 @@ EnergyRecord runNoise(Integrator integrator) {
   return r;
 }
 
-}  // namespace
-
-TEST(SymplecticIntegrator, KeepsTheEnergyOfUndampedSoundWhereTheMidpointRuleGrowsIt) {
-  const EnergyRecord symplectic = runNoise(Integrator::Symplectic);
-  const EnergyRecord midpoint = runNoise(Integrator::PredictorCorrector);
-  std::printf("kinetic + elastic energy over %d steps, relative to the start: symplectic largest %.4f, last %.4f; "
-              "midpoint largest %.4f, last %.4f (E0 = %.3e J/m)\n",
-              kSteps, symplectic.largest / symplectic.e0, symplectic.last / symplectic.e0, midpoint.largest / midpoint.e0,
+template <int D>
+void expectSymplecticKeepsTheEnergy() {
+  const EnergyRecord symplectic = runNoise<D>(Integrator::Symplectic);
+  const EnergyRecord midpoint = runNoise<D>(Integrator::PredictorCorrector);
+  std::printf("%dD: kinetic + elastic energy over %d steps, relative to the start: symplectic largest %.4f, last %.4f; "
+              "midpoint largest %.4f, last %.4f (E0 = %.3e J)\n",
+              D, kSteps, symplectic.largest / symplectic.e0, symplectic.last / symplectic.e0, midpoint.largest / midpoint.e0,
               midpoint.last / midpoint.e0, symplectic.e0);
   EXPECT_LT(symplectic.largest, 1.05 * symplectic.e0);
   EXPECT_GT(midpoint.largest, 1.5 * midpoint.e0);
 }
+
+}  // namespace
+
+TEST(SymplecticIntegrator, KeepsTheEnergyOfUndampedSoundWhereTheMidpointRuleGrowsIt) { expectSymplecticKeepsTheEnergy<2>(); }
+
+TEST(SymplecticIntegrator, KeepsTheEnergyOfUndampedSoundIn3D) { expectSymplecticKeepsTheEnergy<3>(); }

@@ -440,6 +440,7 @@ TEST(SceneLoader, Integrator) {
   EXPECT_EQ(io::loadSceneText(io::resolvedSceneYaml(c), "resolved.yaml").method.integrator, fluid::Integrator::Symplectic);
   const std::string typo = errorOf(std::string(kBase) + "method:\n  integrator: leapfrog\n");
   EXPECT_NE(typo.find("'method.integrator'"), std::string::npos) << typo;
+  EXPECT_NE(typo.find("expected 'predictor_corrector' or 'symplectic', got 'leapfrog'"), std::string::npos) << typo;
   const std::string fraction = errorOf(std::string(kBase) + "method:\n  integrator: symplectic\n  predictor_fraction: 0.7\n");
   EXPECT_NE(fraction.find("'method.predictor_fraction'"), std::string::npos) << fraction;
   EXPECT_TRUE(errorOf(std::string(kBase) + "method:\n  integrator: symplectic\n  predictor_fraction: 0.5\n").empty());

@@ -1,9 +1,46 @@
 #pragma once
 // Numerical-method parameters. `reference()` is METHOD.md exactly; options on top
 // of it (density diffusion, the Monaghan XSPH form) are off there.
+#include <cstddef>
 #include <string>
 
 namespace moorsph::fluid {
+
+/// An option's names in scenes and runner keys: one table per enum, shared by the scene
+/// reader, the scene writer and the runners.
+template <class Enum>
+struct OptionName {
+  Enum value;
+  const char* name;
+};
+
+/// The name of `value` in `table` (the first entry's if it is not there).
+template <class Enum, std::size_t N>
+const char* optionName(const OptionName<Enum> (&table)[N], Enum value) {
+  for (const auto& entry : table)
+    if (entry.value == value) return entry.name;
+  return table[0].name;
+}
+
+/// False if `name` is none of the table's names (then `value` is left as it was).
+template <class Enum, std::size_t N>
+bool optionFromName(const OptionName<Enum> (&table)[N], const std::string& name, Enum& value) {
+  for (const auto& entry : table)
+    if (name == entry.name) {
+      value = entry.value;
+      return true;
+    }
+  return false;
+}
+
+/// "'a', 'b' or 'c'": the table's names for an error message.
+template <class Enum, std::size_t N>
+std::string optionNames(const OptionName<Enum> (&table)[N]) {
+  std::string list;
+  for (std::size_t i = 0; i < N; ++i)
+    list += (i == 0 ? "'" : i + 1 == N ? " or '" : ", '") + std::string(table[i].name) + "'";
+  return list;
+}
 
 enum class XsphForm {
   /// METHOD.md: dr/dt = (1 - eps) v_i + eps sum_j (m_j/rho_j) v_j W_ij, self term included.
@@ -11,6 +48,11 @@ enum class XsphForm {
   /// Monaghan (1989): dr/dt = v_i + eps sum_j (m_j/rho_j) (v_j - v_i) W_ij; keeps a uniform
   /// flow's speed exactly, also where the kernel is truncated at the free surface.
   Monaghan,
+};
+
+inline constexpr OptionName<XsphForm> kXsphFormNames[] = {
+    {XsphForm::Reference, "reference"},
+    {XsphForm::Monaghan, "monaghan"},
 };
 
 enum class DensityDiffusionForm {
@@ -22,31 +64,18 @@ enum class DensityDiffusionForm {
   Renormalised,
 };
 
-/// The forms' names in scenes and runner keys: the one table the reader and writer share.
-struct DensityDiffusionFormName {
-  DensityDiffusionForm form;
-  const char* name;
-};
-inline constexpr DensityDiffusionFormName kDensityDiffusionFormNames[] = {
+inline constexpr OptionName<DensityDiffusionForm> kDensityDiffusionFormNames[] = {
     {DensityDiffusionForm::Fourtakas, "fourtakas"},
     {DensityDiffusionForm::MolteniColagrossi, "molteni_colagrossi"},
     {DensityDiffusionForm::Renormalised, "renormalised"},
 };
 
 inline const char* densityDiffusionFormName(DensityDiffusionForm form) {
-  for (const auto& f : kDensityDiffusionFormNames)
-    if (f.form == form) return f.name;
-  return "fourtakas";
+  return optionName(kDensityDiffusionFormNames, form);
 }
 
-/// False if `name` is none of the forms' names (then `form` is left as it was).
 inline bool densityDiffusionFormFromName(const std::string& name, DensityDiffusionForm& form) {
-  for (const auto& f : kDensityDiffusionFormNames)
-    if (name == f.name) {
-      form = f.form;
-      return true;
-    }
-  return false;
+  return optionFromName(kDensityDiffusionFormNames, name, form);
 }
 
 /// How a step advances the state (fluid_simulation.hpp).
@@ -61,6 +90,11 @@ enum class Integrator {
   Symplectic,
 };
 
+inline constexpr OptionName<Integrator> kIntegratorNames[] = {
+    {Integrator::PredictorCorrector, "predictor_corrector"},
+    {Integrator::Symplectic, "symplectic"},
+};
+
 /// The wall law of boundary_force_law.hpp.
 enum class BoundaryForceForm {
   /// METHOD.md section 2: each boundary particle pushes along its normal only.
@@ -71,6 +105,11 @@ enum class BoundaryForceForm {
   /// reference law's normal-only push is not a gradient; on a free body it fed a
   /// growing sway (docs/validation/tethered-buoy.md, "A flutter of the wall law").
   Conservative,
+};
+
+inline constexpr OptionName<BoundaryForceForm> kBoundaryForceFormNames[] = {
+    {BoundaryForceForm::Reference, "reference"},
+    {BoundaryForceForm::Conservative, "conservative"},
 };
 
 /// Particle shifting (the "particle_shifting" effect, particle_shifting.hpp).
