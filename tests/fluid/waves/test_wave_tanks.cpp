@@ -141,6 +141,12 @@ TEST(PeriodicWaveTank, InitialWaveTravelsAtThePhaseSpeed) {
 TEST(DampingZone, ReflectsLessThanTenPercent) {
   cases::PistonFlumeSpec spec;  // T = 0.836 s, depth 0.26 m (13 rows), lambda = 1.01 m
   spec.fluid.dx = 0.02;
+  // With density diffusion (as every wave scene has): without it, this flume at two
+  // particles per height is so noisy that a change of round-off alone (the compiler's
+  // fused multiply-adds in the pair loop) moved the fitted R from 0.033 to 0.166 and the
+  // incident height by 14% (session 20); with it both builds give the same heights to
+  // five digits.
+  spec.fluid.effects.push_back("density_diffusion");
   spec.height = 0.04;
   spec.length = 3.0;
   spec.damping_start = 1.75;    // 1.25 m = 1.2 lambda of damping
