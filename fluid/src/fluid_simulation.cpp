@@ -4,7 +4,7 @@
 #include <cmath>
 #include <sstream>
 #include <moorsph/fluid/gravity.hpp>
-#include <moorsph/fluid/mirror_floor.hpp>
+#include <moorsph/fluid/mirror_reflection.hpp>
 #include <moorsph/fluid/particle_shifting.hpp>
 #include <moorsph/fluid/run_guard.hpp>
 
@@ -12,7 +12,7 @@ namespace moorsph::fluid {
 namespace {
 
 const char* const kKnownEffects[] = {"pressure", "viscosity", "xsph", "density_diffusion", "gravity", "walls", "particle_shifting",
-                                     "mirror_floor", "outflow"};
+                                     "mirror_floor", "mirror_walls", "outflow"};
 
 void checkSetup(const std::vector<std::string>& effects) {
   for (const auto& e : effects) {
@@ -53,7 +53,7 @@ FluidSimulation<D>::FluidSimulation(FluidSetup<D> setup, FluidParticles<D> fluid
 template <int D>
 void FluidSimulation<D>::buildEffects(BoundaryGeometry<D> boundary) {
   if (setup_.has("gravity")) effects_.push_back(std::make_unique<Gravity<D>>(setup_.gravity));
-  if (setup_.has("mirror_floor")) effects_.push_back(std::make_unique<MirrorFloorReflection<D>>(setup_.mirror_floor_height));
+  if (!setup_.mirrorPlanes().empty()) effects_.push_back(std::make_unique<MirrorReflection<D>>(setup_.mirrorPlanes()));
   if (setup_.has("walls")) {
     auto walls = std::make_unique<Walls<D>>(std::move(boundary), setup_);
     walls_ = walls.get();
@@ -84,7 +84,7 @@ void FluidSimulation<D>::addEffect(std::unique_ptr<FluidEffect<D>> effect) {
 template <int D>
 std::vector<std::string> FluidSimulation<D>::effectNames() const {
   std::vector<std::string> names{"pressure"};
-  for (const char* term : {"viscosity", "xsph", "density_diffusion", "mirror_floor"})
+  for (const char* term : {"viscosity", "xsph", "density_diffusion", "mirror_floor", "mirror_walls"})
     if (setup_.has(term)) names.emplace_back(term);
   for (const auto& e : effects_) names.emplace_back(e->name());
   if (outflow_) names.emplace_back("outflow");

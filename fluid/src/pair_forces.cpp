@@ -9,13 +9,13 @@
 namespace moorsph::fluid {
 namespace {
 
-template <int D, bool Periodic, class Viscosity, class Xsph, class Diffusion, class Floor>
+template <int D, bool Periodic, class Viscosity, class Xsph, class Diffusion, class Mirror>
 class PairForcesImpl final : public PairForces<D> {
   static constexpr bool kViscosity = !std::is_same_v<Viscosity, NoTerm>;
   static constexpr bool kXsph = !std::is_same_v<Xsph, NoTerm>;
   static constexpr bool kDiffusion = !std::is_same_v<Diffusion, NoTerm>;
   static constexpr bool kRenormalised = std::is_same_v<Diffusion, RenormalisedDensityDiffusionTerm<D>>;
-  static constexpr bool kMirror = !std::is_same_v<Floor, NoTerm>;
+  static constexpr bool kMirror = !std::is_same_v<Mirror, NoTerm>;
 
   /// What the pair terms need of a neighbour j: a particle or its mirror image.
   struct Neighbour {
@@ -48,8 +48,8 @@ class PairForcesImpl final : public PairForces<D> {
   };
 
  public:
-  PairForcesImpl(Viscosity viscosity, Xsph xsph, Diffusion diffusion, Floor floor)
-      : viscosity_(viscosity), xsph_(xsph), diffusion_(diffusion), floor_(floor) {}
+  PairForcesImpl(Viscosity viscosity, Xsph xsph, Diffusion diffusion, Mirror mirror)
+      : viscosity_(viscosity), xsph_(xsph), diffusion_(diffusion), mirror_(mirror) {}
 
   std::uint64_t lastInteractions() const override { return interactions_; }
 
@@ -98,7 +98,9 @@ class PairForcesImpl final : public PairForces<D> {
   }
 
  private:
-  /// Density, pressure quotient and volume of each particle's mirror image (MirrorFloorTerm).
+  /// Density, pressure quotient and volume of each particle's image across the
+  /// horizontal mirror plane near it (MirrorTerm): the pressure continued hydrostatically.
+  /// Images across vertical planes only keep the particle's own.
   void imageStates(FluidContext<D>& ctx) {
     const FluidParticles<D>& f = ctx.fluid;
     const TaitEos eos = ctx.eos;
@@ -109,9 +111,10 @@ class PairForcesImpl final : public PairForces<D> {
     image_volume_.resize(n);
 #pragma omp parallel for schedule(static)
     for (std::size_t i = 0; i < n; ++i) {
-      const double above = f.r[i][1] - floor_.height;
-      if (above >= floor_.reach) continue;  // its image is out of everyone's reach
-      const double p = f.p[i] + 2.0 * floor_.rho0_g * above;
+      double plane, distance;
+      int inside;
+      if (!mirror_.near(1, f.r[i][1], plane, inside, distance)) continue;  // out of everyone's reach
+      const double p = f.p[i] + mirror_.rho0_gy * 2.0 * (plane - f.r[i][1]);  // rho0 g . (r' - r)
       image_rho_[i] = eos.density(p);
       image_inv_rho_[i] = 1.0 / image_rho_[i];
       image_p_over_rho2_[i] = p * image_inv_rho_[i] * image_inv_rho_[i];
@@ -126,31 +129,62 @@ class PairForcesImpl final : public PairForces<D> {
     return nb;
   }
 
-  /// The mirror image of particle j seen from i (MirrorFloorTerm); rij is r_i - r_j.
-  Neighbour image(const FluidParticles<D>& f, std::uint32_t j, const Vec<D>& rij) const {
-    Vec<D> rij_image = rij;  // r_i - r_j' = (x_i - x_j, (y_i - floor) + (y_j - floor))
-    rij_image[1] = rij[1] + 2.0 * (f.r[j][1] - floor_.height);
-    Neighbour nb{rij_image, Floor::mirror(f.v[j]), image_rho_[j], f.m[j], image_p_over_rho2_[j], image_inv_rho_[j],
-                 image_volume_[j], Vec<D>::Zero()};
-    if constexpr (kRenormalised) {
-      nb.grad_rho = Floor::mirror(grad_rho_[j]);
-      nb.grad_rho[1] += floor_.ghost_gradient;
+  /// The mirror planes near an owner particle i: a bit per axis with a plane within
+  /// reach, that plane's position and side, and i's distance from it.
+  struct NearPlanes {
+    unsigned mask = 0;
+    Vec<D> position, distance;
+    int inside[D];
+  };
+  NearPlanes nearPlanes(const Vec<D>& r) const {
+    NearPlanes near;
+    for (int a = 0; a < D; ++a)
+      if (mirror_.near(a, r[a], near.position[a], near.inside[a], near.distance[a])) near.mask |= 1u << a;
+    return near;
+  }
+
+  /// The image of particle j across the planes of `axes` (bits of near.mask) seen from
+  /// i; rij is r_i - r_j. Along a mirrored axis r_i - r_j' = (x_i - p) + (x_j - p).
+  Neighbour image(const FluidParticles<D>& f, std::uint32_t j, const Vec<D>& rij, const NearPlanes& near,
+                  unsigned axes) const {
+    Neighbour nb = particle(f, j, rij);
+    for (int a = 0; a < D; ++a) {
+      if (!(axes & (1u << a))) continue;
+      nb.rij[a] = rij[a] + 2.0 * (f.r[j][a] - near.position[a]);
+      nb.v[a] = -nb.v[a];
+      if constexpr (kRenormalised) nb.grad_rho[a] = -nb.grad_rho[a];
+    }
+    if (axes & 2u) {  // moved vertically: the hydrostatic image state
+      nb.rho = image_rho_[j];
+      nb.p_over_rho2 = image_p_over_rho2_[j];
+      nb.inv_rho = image_inv_rho_[j];
+      nb.volume = image_volume_[j];
+      if constexpr (kRenormalised) nb.grad_rho[1] += mirror_.ghost_gradient;
     }
     return nb;
   }
 
-  /// True if j's image can be within reach of i (both within 2h of the floor in total).
-  bool imageInReach(const FluidParticles<D>& f, std::size_t i, std::uint32_t j) const {
-    return (f.r[i][1] - floor_.height) + (f.r[j][1] - floor_.height) < floor_.reach;
+  /// Visits j's images that can be within reach of i: across every non-empty set of
+  /// the planes near i for which i and j together lie within 2h of each plane.
+  template <class Visit>
+  void visitImages(const FluidParticles<D>& f, std::uint32_t j, const Vec<D>& rij, const NearPlanes& near,
+                   Visit& visit) const {
+    unsigned reachable = 0;
+    for (int a = 0; a < D; ++a)
+      if ((near.mask & (1u << a)) && near.distance[a] + near.inside[a] * (f.r[j][a] - near.position[a]) < mirror_.reach)
+        reachable |= 1u << a;
+    for (unsigned axes = reachable; axes != 0; axes = (axes - 1) & reachable) visit(image(f, j, rij, near, axes));
   }
 
-  /// Calls visit(nb) for every neighbour of i: each listed particle j and, with a
-  /// mirror floor, j's image and i's own. visit returns false when nb is out of reach;
-  /// j's image is then skipped, being farther still (both lie above the floor). Returns
-  /// the number of listed particles within reach.
+  /// Calls visit(nb) for every neighbour of i: each listed particle j and, with mirror
+  /// planes, j's images and i's own. visit returns false when nb is out of reach; j's
+  /// images are then skipped, being no nearer while i is on the water's side of the
+  /// planes. Returns the number of listed particles within reach.
   template <class Visit>
   std::uint32_t forEachNeighbour(const FluidParticles<D>& f, const NeighbourList& list, const Domain<D>& domain,
                                  std::size_t i, Visit&& visit) const {
+    NearPlanes near;
+    if constexpr (kMirror) near = nearPlanes(f.r[i]);
     std::uint32_t count = 0;
     for (std::uint64_t s = list.begin[i]; s < list.begin[i + 1]; ++s) {
       const std::uint32_t j = list.index[s];
@@ -159,12 +193,10 @@ class PairForcesImpl final : public PairForces<D> {
       if (!visit(particle(f, j, rij))) continue;
       ++count;
       if constexpr (kMirror)
-        if (imageInReach(f, i, j)) visit(image(f, j, rij));
+        if (near.mask) visitImages(f, j, rij, near, visit);
     }
-    if constexpr (kMirror) {
-      const auto self = static_cast<std::uint32_t>(i);
-      if (imageInReach(f, i, self)) visit(image(f, self, Vec<D>::Zero()));
-    }
+    if constexpr (kMirror)
+      if (near.mask) visitImages(f, static_cast<std::uint32_t>(i), Vec<D>::Zero(), near, visit);
     return count;
   }
 
@@ -261,7 +293,7 @@ class PairForcesImpl final : public PairForces<D> {
   Viscosity viscosity_;
   Xsph xsph_;
   Diffusion diffusion_;
-  Floor floor_;
+  Mirror mirror_;
   std::uint64_t interactions_ = 0;
   std::vector<double> p_over_rho2_, inv_rho_, volume_;
   std::vector<Vec<D>> grad_rho_;  ///< renormalised density gradients (kRenormalised only)
@@ -271,20 +303,20 @@ class PairForcesImpl final : public PairForces<D> {
 // Compile-time composition: pick each term's type from the scene's list, one branch
 // per term, resolved once here.
 template <int D, bool Periodic, class V, class X, class Dd>
-std::unique_ptr<PairForces<D>> withFloor(const FluidSetup<D>& s, V v, X x, Dd d) {
-  if (s.has("mirror_floor")) {
-    if (s.domain.periodic[1]) throw std::invalid_argument("mirror_floor: the domain must not be periodic along y");
-    return std::make_unique<PairForcesImpl<D, Periodic, V, X, Dd, MirrorFloorTerm<D>>>(v, x, d, MirrorFloorTerm<D>(s));
-  }
+std::unique_ptr<PairForces<D>> withMirrors(const FluidSetup<D>& s, V v, X x, Dd d) {
+  if (s.has("mirror_walls") && s.mirror_walls.empty())
+    throw std::invalid_argument("mirror_walls: no planes (a tank builder sets them from its side faces)");
+  if (!s.mirrorPlanes().empty())
+    return std::make_unique<PairForcesImpl<D, Periodic, V, X, Dd, MirrorTerm<D>>>(v, x, d, MirrorTerm<D>(s));
   return std::make_unique<PairForcesImpl<D, Periodic, V, X, Dd, NoTerm>>(v, x, d, NoTerm{});
 }
 
 template <int D, bool Periodic, class V, class X>
 std::unique_ptr<PairForces<D>> withDiffusion(const FluidSetup<D>& s, V v, X x) {
   if (s.has("density_diffusion") && s.method.density_diffusion_form == DensityDiffusionForm::Renormalised)
-    return withFloor<D, Periodic>(s, v, x, RenormalisedDensityDiffusionTerm<D>(s));
-  if (s.has("density_diffusion")) return withFloor<D, Periodic>(s, v, x, DensityDiffusionTerm<D>(s));
-  return withFloor<D, Periodic>(s, v, x, NoTerm{});
+    return withMirrors<D, Periodic>(s, v, x, RenormalisedDensityDiffusionTerm<D>(s));
+  if (s.has("density_diffusion")) return withMirrors<D, Periodic>(s, v, x, DensityDiffusionTerm<D>(s));
+  return withMirrors<D, Periodic>(s, v, x, NoTerm{});
 }
 
 template <int D, bool Periodic, class V>

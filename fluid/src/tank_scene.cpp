@@ -30,8 +30,10 @@ Scene<D> buildTankScene(const TankSpec<D>& spec) {
   fillBox<D>(scene.fluid, spec.water_lower, spec.water_upper, spec.dx, eos, g, spec.water_upper[1]);
 
   const bool mirror_floor = scene.setup.has("mirror_floor");
-  const BoxFaces<D> faces = tankFaces<D>(spec.lid, mirror_floor);
+  const bool mirror_walls = scene.setup.has("mirror_walls");
+  const BoxFaces<D> faces = tankFaces<D>(spec.lid, mirror_floor, mirror_walls);
   if (mirror_floor) scene.setup.mirror_floor_height = 0.0;  // the images close the floor
+  if (mirror_walls) scene.setup.mirror_walls = sideMirrorPlanes<D>(Vec<D>::Zero(), spec.size);
   scene.boundary.addSurface(sampleBoxSurface<D>(Vec<D>::Zero(), spec.size, spacing, faces, NormalSide::Inward),
                             SurfaceInfo{"tank", false});
   return scene;

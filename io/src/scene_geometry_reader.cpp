@@ -205,6 +205,13 @@ void readGeometry(MapReader& top, SceneConfig& c) {
         m.fail("floor", "expected 'walls' (a row of boundary particles) or 'mirror' (the mirror_floor effect), got '" +
                             floor + "'");
       t.mirror_floor = floor == "mirror";
+      const std::string sides = m.text("sides", "walls");
+      if (sides != "walls" && sides != "mirror")
+        m.fail("sides", "expected 'walls' (boundary particles) or 'mirror' (the mirror_walls effect), got '" + sides + "'");
+      t.mirror_sides = sides == "mirror";
+      for (int k = 0; k < c.dim && t.mirror_sides; ++k)
+        if (k != 1 && c.periodic[k])
+          m.fail("sides", "'mirror' needs side walls, but the domain is periodic along " + std::string(k == 0 ? "x" : "z"));
       t.where.text = src.locate(item, item_path);
       if (uniqueName(c, t.name).empty()) m.fail("name", "another surface is already named '" + t.name + "'");
       m.finish();

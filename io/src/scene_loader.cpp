@@ -132,14 +132,17 @@ void readDomain(MapReader& top, SceneConfig& c) {
   d.finish();
 }
 
-/// A tank's "floor: mirror" and the "mirror_floor" effect go together, for one tank.
-void checkMirrorFloor(MapReader& top, const SceneConfig& c) {
-  const auto mirrored = std::count_if(c.tanks.begin(), c.tanks.end(), [](const TankConfig& t) { return t.mirror_floor; });
-  if (mirrored > 1) top.fail("geometry", "only one tank may have 'floor: mirror'");
-  if (mirrored == 1 && !c.hasEffect("mirror_floor"))
-    top.fail("effects", "a tank has 'floor: mirror' but 'mirror_floor' is not in the effects");
-  if (mirrored == 0 && c.hasEffect("mirror_floor"))
-    top.fail("effects", "'mirror_floor' is listed but no tank has 'floor: mirror'");
+/// A tank key that makes mirror images (`key: mirror`) and its effect go together, for
+/// one tank.
+void checkMirror(MapReader& top, const SceneConfig& c, bool TankConfig::*mirrored_face, const std::string& key,
+                 const std::string& effect) {
+  const auto mirrored = std::count_if(c.tanks.begin(), c.tanks.end(), [&](const TankConfig& t) { return t.*mirrored_face; });
+  const std::string tank_key = "'" + key + ": mirror'";
+  if (mirrored > 1) top.fail("geometry", "only one tank may have " + tank_key);
+  if (mirrored == 1 && !c.hasEffect(effect))
+    top.fail("effects", "a tank has " + tank_key + " but '" + effect + "' is not in the effects");
+  if (mirrored == 0 && c.hasEffect(effect))
+    top.fail("effects", "'" + effect + "' is listed but no tank has " + tank_key);
 }
 
 
@@ -203,7 +206,8 @@ SceneConfig readScene(const YAML::Node& root, const YamlSource& source) {
   }
   if (c.bodies.empty() && c.hasEffect("bodies"))
     top.fail("effects", "'bodies' is listed but the scene has no 'bodies' list");
-  checkMirrorFloor(top, c);
+  checkMirror(top, c, &TankConfig::mirror_floor, "floor", "mirror_floor");
+  checkMirror(top, c, &TankConfig::mirror_sides, "sides", "mirror_walls");
   readOutput(top, c);
   top.finish();
 
@@ -215,7 +219,7 @@ SceneConfig readScene(const YAML::Node& root, const YamlSource& source) {
 const std::vector<std::string>& knownEffects() {
   static const std::vector<std::string> known{"pressure", "viscosity", "xsph",         "density_diffusion", "gravity",
                                               "walls",    "piston",    "damping_zone", "forcing_region", "bodies",
-                                              "particle_shifting", "mirror_floor", "outflow"};
+                                              "particle_shifting", "mirror_floor", "mirror_walls", "outflow"};
   return known;
 }
 

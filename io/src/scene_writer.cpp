@@ -81,6 +81,7 @@ std::string resolvedSceneYaml(const SceneConfig& c) {
     extent(e, t.box, c.dim);
     e << YAML::Key << "lid" << YAML::Value << t.lid;
     if (t.mirror_floor) e << YAML::Key << "floor" << YAML::Value << "mirror";
+    if (t.mirror_sides) e << YAML::Key << "sides" << YAML::Value << "mirror";
     e << YAML::EndMap << YAML::EndMap;
   }
   for (const auto& w : c.water) {

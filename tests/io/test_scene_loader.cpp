@@ -413,6 +413,42 @@ geometry:
   EXPECT_NE(bad.find("s.yaml:9:"), std::string::npos) << bad;
 }
 
+// A tank with "sides: mirror" leaves out its side walls' particles and sets the
+// mirror_walls planes at its side faces; the key and the effect go together, and a
+// domain periodic across them is refused at the key.
+TEST(SceneLoader, MirrorWallsTank) {
+  const std::string mirror = R"(dim: 3
+end_time: 0.1
+resolution:
+  dx: 0.02
+fluid:
+  sound_speed: 25
+effects: [pressure, gravity, walls, mirror_floor, mirror_walls]
+geometry:
+  - tank: {lower: [0, 0, -0.1], upper: [0.4, 0.3, 0.2], floor: mirror, sides: mirror}
+  - water: {lower: [0, 0, -0.1], upper: [0.4, 0.2, 0.2]}
+)";
+  const auto c = io::loadSceneText(mirror, "s.yaml");
+  const auto built = io::buildScene<3>(c);
+  ASSERT_EQ(built.scene.setup.mirror_walls.size(), 4u);
+  EXPECT_DOUBLE_EQ(built.scene.setup.mirror_walls[2].position, -0.1);  // the -z face
+  EXPECT_EQ(built.scene.setup.mirror_walls[2].axis, 2);
+  EXPECT_EQ(built.scene.boundary.particles.size(), 0u) << "an open tank with mirror floor and sides keeps no particle";
+  const auto again = io::loadSceneText(io::resolvedSceneYaml(c), "resolved.yaml");
+  EXPECT_TRUE(again.tanks.at(0).mirror_sides);
+
+  std::string missing = mirror;
+  missing.replace(missing.find(", mirror_walls]"), 15, "]");
+  const std::string no_effect = errorOf(missing);
+  EXPECT_NE(no_effect.find("'mirror_walls' is not in the effects"), std::string::npos) << no_effect;
+  std::string periodic = mirror;
+  periodic.replace(periodic.find("geometry:"), 9,
+                   "domain: {lower: [-0.1, -0.1, -0.1], upper: [0.5, 0.8, 0.2], periodic: [false, false, true]}\ngeometry:");
+  const std::string across = errorOf(periodic);
+  EXPECT_NE(across.find("'geometry[0].tank.sides'"), std::string::npos) << across;
+  EXPECT_NE(across.find("periodic along z"), std::string::npos) << across;
+}
+
 // The wall law's own length: read, checked against h_factor and b_off, written back.
 TEST(SceneLoader, WallLawLength) {
   const auto c = io::loadSceneText(std::string(kBase) + "method:\n  h_factor: 2\n  boundary_h_factor: 1.2\n", "s.yaml");

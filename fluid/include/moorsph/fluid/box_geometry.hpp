@@ -2,8 +2,10 @@
 // Geometry builders for boxes: a box tank's walls, a box obstacle's surface, and a
 // block of fluid particles on a lattice.
 #include <array>
+#include <vector>
 #include <moorsph/fluid/boundary_particles.hpp>
 #include <moorsph/fluid/fluid_particles.hpp>
+#include <moorsph/fluid/fluid_setup.hpp>
 #include <moorsph/fluid/tait_eos.hpp>
 
 namespace moorsph::fluid {
@@ -27,13 +29,29 @@ BoxFaces<D> openTopTank() {
   return f;
 }
 
-/// A box tank's faces: open at the top unless it has a lid, and without its floor
-/// (-y) face when the mirror_floor effect's plane takes its place.
+/// A box tank's faces: open at the top unless it has a lid, without its floor (-y)
+/// face when the mirror_floor effect's plane takes its place, and without its side
+/// faces (normal to x, and z in 3D) when the mirror_walls effect's planes do.
 template <int D>
-BoxFaces<D> tankFaces(bool lid, bool mirror_floor) {
+BoxFaces<D> tankFaces(bool lid, bool mirror_floor, bool mirror_walls = false) {
   BoxFaces<D> f = lid ? allFaces<D>() : openTopTank<D>();
   if (mirror_floor) f[2 * 1] = false;
+  if (mirror_walls)
+    for (int k = 0; k < D; ++k)
+      if (k != 1) f[2 * k] = f[2 * k + 1] = false;
   return f;
+}
+
+/// The mirror_walls effect's planes for the side faces of the box [lower, upper].
+template <int D>
+std::vector<MirrorPlane> sideMirrorPlanes(const Vec<D>& lower, const Vec<D>& upper) {
+  std::vector<MirrorPlane> planes;
+  for (int k = 0; k < D; ++k) {
+    if (k == 1) continue;
+    planes.push_back(MirrorPlane{k, lower[k], +1});
+    planes.push_back(MirrorPlane{k, upper[k], -1});
+  }
+  return planes;
 }
 
 enum class NormalSide { Inward, Outward };

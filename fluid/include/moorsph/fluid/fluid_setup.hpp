@@ -8,6 +8,15 @@
 
 namespace moorsph::fluid {
 
+/// An axis-aligned plane of mirror images (the mirror_floor and mirror_walls effects,
+/// MirrorTerm in pair_terms.hpp): the water lies on the side `inside` of it (+1: at
+/// coordinates above `position` along `axis`, -1: below).
+struct MirrorPlane {
+  int axis = 1;
+  double position = 0.0;
+  int inside = 1;
+};
+
 template <int D>
 struct FluidSetup {
   double dx = 0.01;            ///< mean particle spacing [m]
@@ -19,11 +28,21 @@ struct FluidSetup {
   MethodParameters method = MethodParameters::reference();
   std::vector<std::string> effects{"pressure", "gravity", "walls"};
   double mirror_floor_height = 0.0;  ///< the floor plane y of the "mirror_floor" effect [m]
+  /// The "mirror_walls" effect's planes: a tank's side faces (normal to x, and z in 3D)
+  /// as mirror images instead of boundary particles, set by the tank builder.
+  std::vector<MirrorPlane> mirror_walls;
 
   double h() const { return method.h_factor * dx; }
   bool has(const std::string& effect) const {
     for (const auto& e : effects) if (e == effect) return true;
     return false;
+  }
+  /// Every mirror plane the scene's effects name: the floor's and the side walls'.
+  std::vector<MirrorPlane> mirrorPlanes() const {
+    std::vector<MirrorPlane> planes;
+    if (has("mirror_floor")) planes.push_back(MirrorPlane{1, mirror_floor_height, +1});
+    if (has("mirror_walls")) planes.insert(planes.end(), mirror_walls.begin(), mirror_walls.end());
+    return planes;
   }
   static Vec<D> gravityDown() {
     Vec<D> g = Vec<D>::Zero();

@@ -1,7 +1,9 @@
 #pragma once
 // The optional terms of the fluid pair loop, each a small value type constructed
 // only when the scene names it (see pair_forces.hpp).
+#include <array>
 #include <cmath>
+#include <stdexcept>
 #include <moorsph/fluid/counted.hpp>
 #include <moorsph/fluid/fluid_setup.hpp>
 
@@ -71,31 +73,63 @@ struct RenormalisedDensityDiffusionTerm : Counted<RenormalisedDensityDiffusionTe
         hydrostatic(s.rho0 * s.gravity / (s.sound_speed * s.sound_speed)) {}
 };
 
-/// A free-slip floor y = height made of mirror images ("ghost particles", Libersky et
-/// al. 1993; the ghost-fluid wall of Colagrossi & Landrini 2003, J. Comput. Phys. 191).
-/// Every fluid particle j within 2h of the floor has an image j' at y' = 2 height - y_j
-/// with the horizontal velocity kept and the vertical one reversed, and the pressure
-/// continued hydrostatically, P_j' = P_j + 2 rho0 |g| (y_j - height), so that the
-/// still water's pressure gradient carries on through the floor. The images complete
-/// the kernel: particles near the floor see a full neighbourhood in the pressure,
-/// continuity, diffusion and XSPH sums, where the "walls" force only pushes. One flat
-/// horizontal floor per scene (a tank's `floor: mirror`, the periodic wave tank's
-/// `floor=mirror`); side walls, pistons and bodies remain boundary particles.
+/// Free-slip walls made of mirror images ("ghost particles", Libersky et al. 1993; the
+/// ghost-fluid wall of Colagrossi & Landrini 2003, J. Comput. Phys. 191): the floor
+/// (mirror_floor) and a tank's side walls (mirror_walls), each an axis-aligned plane.
+/// Every fluid particle j within 2h of a plane has an image j' reflected across it,
+/// with the velocity component normal to the plane reversed; near an edge or corner
+/// also the images across two or three planes (the image of the image). Across a
+/// horizontal plane the pressure is continued hydrostatically,
+/// P_j' = P_j + rho0 g . (r_j' - r_j), so that still water's pressure gradient carries
+/// on through the floor; across a vertical plane the image keeps P_j. The images
+/// complete the kernel: particles near a mirror wall see a full neighbourhood in the
+/// pressure, continuity, diffusion and XSPH sums, where the "walls" force only pushes
+/// and leaves the first layers short of support (docs/stability.md 3c: 79% at a 3D
+/// wall, 64% in an edge column). Pistons and bodies remain boundary particles.
 template <int D>
-struct MirrorFloorTerm : Counted<MirrorFloorTerm<D>> {
-  double height;           ///< the floor plane's y [m]
-  double rho0_g;           ///< rho0 |g| [Pa/m]
-  double ghost_gradient;   ///< 2 rho0 g_y / c_s^2: the image's density gradient shift [kg/m^4]
-  double reach;            ///< 2h: particles farther than this from the floor have no image in range
-  explicit MirrorFloorTerm(const FluidSetup<D>& s)
-      : height(s.mirror_floor_height),
-        rho0_g(s.rho0 * std::abs(s.gravity[1])),
+struct MirrorTerm : Counted<MirrorTerm<D>> {
+  /// The planes normal to one axis: none, one, or two (a tank's opposite faces).
+  struct Axis {
+    int count = 0;
+    double position[2] = {0.0, 0.0};
+    int inside[2] = {1, 1};
+  };
+  std::array<Axis, D> axes;
+  double rho0_gy;         ///< rho0 g_y: the image's pressure change per metre it is moved up [Pa/m]
+  double ghost_gradient;  ///< 2 rho0 g_y / c_s^2: the y-image's density gradient shift [kg/m^4]
+  double reach;           ///< 2h: particles farther than this from a plane have no image in range
+
+  explicit MirrorTerm(const FluidSetup<D>& s)
+      : rho0_gy(s.rho0 * s.gravity[1]),
         ghost_gradient(2.0 * s.rho0 * s.gravity[1] / (s.sound_speed * s.sound_speed)),
-        reach(2.0 * s.h()) {}
-  /// The image of a vector: its vertical component reversed.
-  static Vec<D> mirror(Vec<D> a) {
-    a[1] = -a[1];
-    return a;
+        reach(2.0 * s.h()) {
+    for (const MirrorPlane& p : s.mirrorPlanes()) {
+      if (p.axis < 0 || p.axis >= D) throw std::invalid_argument("mirror plane: axis out of range");
+      if (s.domain.periodic[p.axis]) throw std::invalid_argument("mirror planes: the domain must not be periodic along them");
+      if (p.axis != 1 && s.gravity[p.axis] != 0.0)
+        throw std::invalid_argument("mirror_walls: gravity must be normal to the floor (the images keep P across a side wall)");
+      Axis& a = axes[p.axis];
+      if (a.count == 2) throw std::invalid_argument("mirror planes: more than two normal to one axis");
+      if (a.count == 1 && std::abs(a.position[0] - p.position) <= 2.0 * reach)
+        throw std::invalid_argument("mirror planes: two parallel planes closer than 4h (a particle would see both)");
+      a.position[a.count] = p.position;
+      a.inside[a.count] = p.inside;
+      ++a.count;
+    }
+  }
+
+  /// The plane normal to `axis` within reach of coordinate x, if any: its position,
+  /// side, and x's signed distance from it into the water (negative once crossed).
+  bool near(int axis, double x, double& position, int& inside, double& distance) const {
+    const Axis& a = axes[axis];
+    for (int k = 0; k < a.count; ++k) {
+      const double d = a.inside[k] * (x - a.position[k]);
+      if (d < reach) {
+        position = a.position[k], inside = a.inside[k], distance = d;
+        return true;
+      }
+    }
+    return false;
   }
 };
 

@@ -33,6 +33,9 @@ struct TankConfig {
   bool lid = false;          ///< closed top (face +y)
   /// floor: mirror: no floor particles; the "mirror_floor" effect's images close it.
   bool mirror_floor = false;
+  /// sides: mirror: no side-wall particles (faces normal to x, and z in 3D); the
+  /// "mirror_walls" effect's images close them.
+  bool mirror_sides = false;
   bool track_reaction = false;  ///< set when a pressure probe sits on it
   SourceLocation where;
 };

@@ -1,10 +1,10 @@
 #pragma once
-// The mirror_floor effect's second half (the first, the images, is MirrorFloorTerm in
-// pair_terms.hpp): a fluid particle that crossed the floor plane during a step is put
-// back by specular reflection, y -> 2 floor - y, v_y -> -v_y (free slip; the kinetic
-// energy is kept). The images hold the water up by its pressure, but a particle at the
-// plane meets its own image at zero distance, where the kernel gradient vanishes, so
-// nothing there stops one pushed down hard (measured: in the corner between a side
+// The mirror_floor and mirror_walls effects' second half (the first, the images, is
+// MirrorTerm in pair_terms.hpp): a fluid particle that crossed a mirror plane during a
+// step is put back by specular reflection, x_n -> 2 p - x_n, v_n -> -v_n along the
+// plane's normal (free slip; the kinetic energy is kept). The images hold the water
+// back by its pressure, but a particle at a plane meets its own image at zero distance,
+// where the kernel gradient vanishes, so nothing there stops one pushed hard (measured: in the corner between a side
 // wall and the floor, particles went under within 0.2 s and were then expelled
 // downward by their own images). Ghost-particle floors are usually paired with such a
 // reflection for this reason.
@@ -17,30 +17,35 @@
 // particles of still water reaching 0.9-1.3 m/s (tests/fluid/test_mirror_floor.cpp).
 // A predicted state a fraction of dt v below the plane is harmless: its image lies just
 // above, as for any particle near the plane.
+#include <vector>
 #include <moorsph/fluid/counted.hpp>
 #include <moorsph/fluid/fluid_effect.hpp>
+#include <moorsph/fluid/fluid_setup.hpp>
 
 namespace moorsph::fluid {
 
 template <int D>
-class MirrorFloorReflection final : public FluidEffect<D>, public Counted<MirrorFloorReflection<D>> {
+class MirrorReflection final : public FluidEffect<D>, public Counted<MirrorReflection<D>> {
  public:
-  explicit MirrorFloorReflection(double height) : height_(height) {}
-  const char* name() const override { return "mirror_floor_reflection"; }
+  explicit MirrorReflection(std::vector<MirrorPlane> planes) : planes_(std::move(planes)) {}
+  const char* name() const override { return "mirror_reflection"; }
   void addRates(FluidContext<D>&) override {}
   void constrain(FluidParticles<D>& f, StepStage stage) override {
     if (stage != StepStage::Corrected) return;
     const std::size_t n = f.size();
 #pragma omp parallel for schedule(static)
     for (std::size_t i = 0; i < n; ++i) {
-      if (f.r[i][1] >= height_) continue;
-      f.r[i][1] = 2.0 * height_ - f.r[i][1];
-      f.v[i][1] = -f.v[i][1];
+      for (const MirrorPlane& p : planes_) {
+        const int a = p.axis;
+        if (p.inside * (f.r[i][a] - p.position) >= 0.0) continue;
+        f.r[i][a] = 2.0 * p.position - f.r[i][a];
+        f.v[i][a] = -f.v[i][a];
+      }
     }
   }
 
  private:
-  double height_;
+  std::vector<MirrorPlane> planes_;
 };
 
 }  // namespace moorsph::fluid
