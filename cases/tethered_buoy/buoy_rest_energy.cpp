@@ -20,6 +20,7 @@
 //                                 [1: mirror floor (the mirror_floor effect)]
 //                                 [h / dx] [b_off] [wall law h_w / dx]
 //                                 [1: conservative wall law (method.boundary_force)]
+//                                 [1: mirror side walls (the mirror_walls effect)]
 // A release time past the end holds the buoy throughout (the fluid alone).
 #include <cmath>
 #include <cstdio>
@@ -87,6 +88,7 @@ int main(int argc, char** argv) {
   tank.b_off = argOr(argc, argv, 11, tank.b_off);
   tank.boundary_h_factor = argOr(argc, argv, 12, tank.boundary_h_factor);
   if (argOr(argc, argv, 13, 0.0) != 0.0) tank.boundary_force = fluid::BoundaryForceForm::Conservative;
+  tank.mirror_walls = argOr(argc, argv, 14, 0.0) != 0.0;
   auto scene = cases::buildTetheredBuoy(tank);
   auto& co = *scene.co;
   const std::vector<Eigen::Vector3d> r0 = startPositions(co.fluid().fluid());

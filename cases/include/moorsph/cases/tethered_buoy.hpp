@@ -67,6 +67,8 @@ struct TetheredBuoyTank {
   fluid::DensityDiffusionForm density_diffusion_form = fluid::DensityDiffusionForm::Fourtakas;
   /// The floor as mirror images (the mirror_floor effect) instead of a row of wall particles.
   bool mirror_floor = false;
+  /// The tank's four side walls as mirror images too (the mirror_walls effect).
+  bool mirror_walls = false;
   /// Spray thrown over the open tank's walls is removed (the outflow effect) instead of
   /// stopping the run: a buoy breaching at D/8 throws droplets 1 m up.
   bool outflow = false;
@@ -108,6 +110,7 @@ inline TetheredBuoyScene buildTetheredBuoy(const TetheredBuoyTank& t) {
   spec.fluid.effects = {"pressure", "viscosity", "xsph", "gravity", "walls"};
   if (t.density_diffusion) spec.fluid.effects.push_back("density_diffusion");
   if (t.mirror_floor) spec.fluid.effects.push_back("mirror_floor");
+  if (t.mirror_walls) spec.fluid.effects.push_back("mirror_walls");
   if (t.outflow) spec.fluid.effects.push_back("outflow");
   auto scene = fluid::buildTankScene<3>(spec);
 
