@@ -132,6 +132,17 @@ void readDomain(MapReader& top, SceneConfig& c) {
   d.finish();
 }
 
+/// 'walls' listed where nothing has wall particles (a tank closed by mirror images
+/// alone, no box, mesh, piston or body) would stop the run at its start.
+void checkWallParticles(MapReader& top, const SceneConfig& c) {
+  const bool tank_particles = std::any_of(c.tanks.begin(), c.tanks.end(), [](const TankConfig& t) { return !t.allMirrors(); });
+  const bool surfaces = tank_particles || !c.boxes.empty() || !c.meshes.empty() || !c.circles.empty() ||
+                        !c.bodies.empty() || c.hasEffect("piston");
+  if (c.hasEffect("walls") && !surfaces && !c.tanks.empty())
+    top.fail("effects", "'walls' is listed but the tank is all mirror images (floor: mirror, sides: mirror, no lid) "
+                        "and nothing else has wall particles: leave 'walls' out");
+}
+
 /// A tank key that makes mirror images (`key: mirror`) and its effect go together, for
 /// one tank.
 void checkMirror(MapReader& top, const SceneConfig& c, bool TankConfig::*mirrored_face, const std::string& key,
@@ -208,6 +219,7 @@ SceneConfig readScene(const YAML::Node& root, const YamlSource& source) {
     top.fail("effects", "'bodies' is listed but the scene has no 'bodies' list");
   checkMirror(top, c, &TankConfig::mirror_floor, "floor", "mirror_floor");
   checkMirror(top, c, &TankConfig::mirror_sides, "sides", "mirror_walls");
+  checkWallParticles(top, c);
   readOutput(top, c);
   top.finish();
 

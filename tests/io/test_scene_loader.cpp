@@ -415,7 +415,8 @@ geometry:
 
 // A tank with "sides: mirror" leaves out its side walls' particles and sets the
 // mirror_walls planes at its side faces; the key and the effect go together, and a
-// domain periodic across them is refused at the key.
+// domain periodic across them is refused at the key. A tank closed by images alone
+// needs no 'walls', and listing it there (nothing has wall particles) is refused.
 TEST(SceneLoader, MirrorWallsTank) {
   const std::string mirror = R"(dim: 3
 end_time: 0.1
@@ -423,7 +424,7 @@ resolution:
   dx: 0.02
 fluid:
   sound_speed: 25
-effects: [pressure, gravity, walls, mirror_floor, mirror_walls]
+effects: [pressure, gravity, mirror_floor, mirror_walls]
 geometry:
   - tank: {lower: [0, 0, -0.1], upper: [0.4, 0.3, 0.2], floor: mirror, sides: mirror}
   - water: {lower: [0, 0, -0.1], upper: [0.4, 0.2, 0.2]}
@@ -447,6 +448,10 @@ geometry:
   const std::string across = errorOf(periodic);
   EXPECT_NE(across.find("'geometry[0].tank.sides'"), std::string::npos) << across;
   EXPECT_NE(across.find("periodic along z"), std::string::npos) << across;
+  std::string walls = mirror;
+  walls.replace(walls.find("gravity, mirror_floor"), 21, "gravity, walls, mirror_floor");
+  const std::string idle = errorOf(walls);
+  EXPECT_NE(idle.find("leave 'walls' out"), std::string::npos) << idle;
 }
 
 // The wall law's own length: read, checked against h_factor and b_off, written back.

@@ -36,6 +36,8 @@ struct TankConfig {
   /// sides: mirror: no side-wall particles (faces normal to x, and z in 3D); the
   /// "mirror_walls" effect's images close them.
   bool mirror_sides = false;
+  /// True when mirror images close every face it has: it then has no wall particles.
+  bool allMirrors() const { return mirror_floor && mirror_sides && !lid; }
   bool track_reaction = false;  ///< set when a pressure probe sits on it
   SourceLocation where;
 };
