@@ -68,11 +68,11 @@ cases::WaveTankFluid fluidOf(Args& a) {
   f.dx = a.get("dx", f.dx);
   f.mu = a.get("mu", f.mu);
   f.sound_speed = a.get("sound_speed", 0.0);
-  if (!fluid::optionFromName(fluid::kXsphFormNames, a.str("xsph_form", "reference"), f.method.xsph_form))
+  if (!fluid::optionFromName(fluid::kXsphFormNames, a.str("xsph_form", fluid::optionName(fluid::kXsphFormNames, f.method.xsph_form)), f.method.xsph_form))
     throw std::invalid_argument("xsph_form: " + fluid::optionNames(fluid::kXsphFormNames));
   f.method.xsph_eps = a.get("xsph_eps", f.method.xsph_eps);
   f.method.predictor_fraction = a.get("predictor_fraction", f.method.predictor_fraction);
-  if (!fluid::optionFromName(fluid::kIntegratorNames, a.str("integrator", "predictor_corrector"), f.method.integrator))
+  if (!fluid::optionFromName(fluid::kIntegratorNames, a.str("integrator", fluid::optionName(fluid::kIntegratorNames, f.method.integrator)), f.method.integrator))
     throw std::invalid_argument("integrator: " + fluid::optionNames(fluid::kIntegratorNames));
   f.method.cfl = a.get("cfl", f.method.cfl);
   f.method.h_factor = a.get("h_factor", f.method.h_factor);
@@ -80,8 +80,8 @@ cases::WaveTankFluid fluidOf(Args& a) {
   f.method.boundary_strength = a.get("boundary_strength", f.method.boundary_strength);
   f.method.boundary_h_factor = a.get("boundary_h_factor", f.method.boundary_h_factor);
   f.method.density_diffusion_delta = a.get("dd_delta", f.method.density_diffusion_delta);
-  const std::string dd_form = a.str("dd_form", "fourtakas");
-  if (!fluid::densityDiffusionFormFromName(dd_form, f.method.density_diffusion_form)) throw std::invalid_argument("dd_form: " + fluid::optionNames(fluid::kDensityDiffusionFormNames));
+  const std::string dd_form = a.str("dd_form", fluid::optionName(fluid::kDensityDiffusionFormNames, f.method.density_diffusion_form));
+  if (!fluid::optionFromName(fluid::kDensityDiffusionFormNames, dd_form, f.method.density_diffusion_form)) throw std::invalid_argument("dd_form: " + fluid::optionNames(fluid::kDensityDiffusionFormNames));
   if (a.get("density_diffusion", 0.0) != 0.0) f.effects.push_back("density_diffusion");
   if (a.get("shifting", 0.0) != 0.0) f.effects.push_back("particle_shifting");
   f.method.shifting.coefficient = a.get("shifting_coefficient", f.method.shifting.coefficient);

@@ -74,8 +74,9 @@ void readMethod(MapReader& top, SceneConfig& c) {
   if (m.has("density_diffusion")) {
     MapReader d(m.child("density_diffusion"), "method.density_diffusion", top.source());
     p.density_diffusion_delta = d.positive("delta", p.density_diffusion_delta, "delta-SPH coefficient");
-    const std::string f = d.text("form", "fourtakas");
-    if (!fluid::densityDiffusionFormFromName(f, p.density_diffusion_form)) d.fail("form", "expected " + fluid::optionNames(fluid::kDensityDiffusionFormNames) + ", got '" + f + "'");
+    const std::string f = d.text("form", fluid::optionName(fluid::kDensityDiffusionFormNames, p.density_diffusion_form));
+    if (!fluid::optionFromName(fluid::kDensityDiffusionFormNames, f, p.density_diffusion_form))
+      d.fail("form", "expected " + fluid::optionNames(fluid::kDensityDiffusionFormNames) + ", got '" + f + "'");
     d.finish();
   } else {
     m.child("density_diffusion");

@@ -58,7 +58,7 @@ std::string resolvedSceneYaml(const SceneConfig& c) {
   e << YAML::Key << "boundary_force" << YAML::Value << fluid::optionName(fluid::kBoundaryForceFormNames, m.boundary_force_form);
   e << YAML::Key << "skin_factor" << YAML::Value << m.skin_factor;
   e << YAML::Key << "density_diffusion" << YAML::Value << YAML::BeginMap;
-  e << YAML::Key << "form" << YAML::Value << fluid::densityDiffusionFormName(m.density_diffusion_form);
+  e << YAML::Key << "form" << YAML::Value << fluid::optionName(fluid::kDensityDiffusionFormNames, m.density_diffusion_form);
   e << YAML::Key << "delta" << YAML::Value << m.density_diffusion_delta << YAML::EndMap;
   e << YAML::Key << "particle_shifting" << YAML::Value << YAML::BeginMap;
   e << YAML::Key << "coefficient" << YAML::Value << m.shifting.coefficient;

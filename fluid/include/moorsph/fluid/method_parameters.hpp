@@ -70,14 +70,6 @@ inline constexpr OptionName<DensityDiffusionForm> kDensityDiffusionFormNames[] =
     {DensityDiffusionForm::Renormalised, "renormalised"},
 };
 
-inline const char* densityDiffusionFormName(DensityDiffusionForm form) {
-  return optionName(kDensityDiffusionFormNames, form);
-}
-
-inline bool densityDiffusionFormFromName(const std::string& name, DensityDiffusionForm& form) {
-  return optionFromName(kDensityDiffusionFormNames, name, form);
-}
-
 /// How a step advances the state (fluid_simulation.hpp).
 enum class Integrator {
   /// METHOD.md section 1: predict by predictor_fraction dt, evaluate, correct the whole
