@@ -19,6 +19,11 @@
 // sqrt(g d), 2.5x the 2D floor) and keeps rearranging; the buoy's symmetric start
 // hides it until rounding breaks the symmetry near 2 s (moorsph_buoy_rest_energy,
 // cases/still_water_3d.yaml).
+// Session 20: that noise is gone in a tank whose walls are mirror images with h = 2 dx
+// (mirror_walls); there, at D/8, the drift is 0.19 mm, but the buoy rests 0.87 dx below the
+// nominal pose (the sphere's boundary offset is tuned for h = 1.2 dx) and the rocking
+// still grows from the symmetric start to 3.1 deg, so this test keeps its D/6 set-up
+// until both are fixed (docs/validation/tethered-buoy.md, session 20).
 #include <gtest/gtest.h>
 
 #include <cmath>
