@@ -21,7 +21,8 @@
 //                                 [h / dx] [b_off] [wall law h_w / dx]
 //                                 [1: conservative wall law (method.boundary_force)]
 //                                 [1: mirror side walls (the mirror_walls effect)]
-// A release time past the end holds the buoy throughout (the fluid alone).
+// A release time past the end holds the buoy throughout (the fluid alone); while held the
+// force columns show the fluid's wrench on the held sphere (its buoyancy in Fy_N).
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -31,6 +32,8 @@
 namespace {
 
 using namespace moorsph;
+
+constexpr std::size_t kBuoySurface = 1;  // after the tank's walls (buildTetheredBuoy)
 
 double argOr(int argc, char** argv, int i, double fallback) { return argc > i ? std::atof(argv[i]) : fallback; }
 
@@ -104,7 +107,13 @@ int main(int argc, char** argv) {
     co.step();
     const double dt = co.time() - before;
     before = co.time();
-    const auto w = co.coupling().appliedWrench(0);  // zero while the buoy is held
+    auto w = co.coupling().appliedWrench(0);  // zero while the buoy is held
+    if (co.time() < tank.release_time) {       // held: report the fluid's wrench all the same
+      const auto& walls = *co.fluid().walls();
+      const auto held = walls.calcSurfaceWrench(kBuoySurface, walls.surfaceMotion(kBuoySurface).position);
+      w.force = held.force;
+      w.torque = held.torque;
+    }
     const auto k = co.bodies().kinematics(0);
     Eigen::Vector3d horizontal = w.force;
     horizontal[1] = 0.0;
