@@ -15,6 +15,7 @@
 #include <moorsph/io/particle_file.hpp>
 #include <moorsph/io/scene_builder.hpp>
 #include <moorsph/io/scene_loader.hpp>
+#include <moorsph/io/series_history.hpp>
 #include "progress.hpp"
 #include "scene_series.hpp"
 #if MOORSPH_HAS_BODIES
@@ -86,6 +87,26 @@ bool sameBoundary(const std::string& saved_yaml, const io::BuiltScene<D>& built)
     return true;
   } catch (const std::exception&) {
     return false;  // the saved scene no longer loads or builds: keep the textual verdict
+  }
+}
+
+/// A restart's series.h5 starts with the rows the interrupted run wrote up to the
+/// checkpoint (read from the series.h5 beside it), so its series run from t = 0.
+void carryRestartHistory(RunLog& log, const std::string& checkpoint, io::SeriesFile& series, double restart_time) {
+  const std::string previous = (fs::path(checkpoint).parent_path() / "series.h5").string();
+  if (!fs::exists(previous)) {
+    log.line(format("  note: no series.h5 beside the checkpoint; the series start at t = %.6g s", restart_time));
+    return;
+  }
+  try {
+    const io::CarriedHistory h = io::carrySeriesHistory(previous, series, restart_time);
+    std::string names;
+    for (const auto& n : h.carried) names += " " + n;
+    log.line(format("  series: %.0f rows up to t = %.6g s carried from ", static_cast<double>(h.rows), restart_time) +
+             previous + " (" + std::to_string(h.carried.size()) + " series:" + names + ")");
+    for (const auto& n : h.skipped) log.line("  note: series '" + n + "' not in " + previous + " with these columns; it starts at the restart");
+  } catch (const std::exception& e) {
+    log.line(std::string("  note: the earlier series could not be carried (") + e.what() + "); the series start at the restart");
   }
 }
 
@@ -180,6 +201,7 @@ int runDim(const io::SceneConfig& config, const RunOptions& o, const std::string
 #if MOORSPH_HAS_BODIES
   if (co) attachBodySeries(recorder, *co, config);
 #endif
+  if (restarting) carryRestartHistory(log, o.restart, series, restored.time);
 
   std::unique_ptr<io::ParticleFile> particle_file;
   long long next_snapshot = restarting ? restored.next_snapshot : 0;

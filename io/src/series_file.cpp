@@ -55,6 +55,8 @@ void appendValues(hid_t set, hsize_t old_size, const std::vector<double>& values
 
 struct SeriesFile::Impl {
   struct Series {
+    std::string name;
+    std::vector<SeriesColumn> columns;
     hid_t group = -1;
     std::vector<hid_t> sets;               // time first, then one per column
     std::vector<std::vector<double>> pending;  // buffered values per set
@@ -84,6 +86,8 @@ SeriesFile::~SeriesFile() {
 int SeriesFile::addSeries(const std::string& name, const std::vector<SeriesColumn>& columns,
                           const std::string& description) {
   Impl::Series s;
+  s.name = name;
+  s.columns = columns;
   s.group = H5Gcreate2(impl_->file, name.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
   if (s.group < 0) throw std::runtime_error(path_ + ": cannot create series '" + name + "'");
   if (!description.empty()) writeStringAttribute(s.group, "description", description);
@@ -100,6 +104,10 @@ void SeriesFile::append(int series, double time, const std::vector<double>& valu
   s.pending[0].push_back(time);
   for (std::size_t c = 0; c < values.size(); ++c) s.pending[c + 1].push_back(values[c]);
 }
+
+int SeriesFile::seriesCount() const { return static_cast<int>(impl_->series.size()); }
+const std::string& SeriesFile::seriesName(int series) const { return impl_->series.at(series).name; }
+const std::vector<SeriesColumn>& SeriesFile::seriesColumns(int series) const { return impl_->series.at(series).columns; }
 
 void SeriesFile::flush() {
   for (auto& s : impl_->series) {

@@ -33,6 +33,10 @@ class SeriesFile {
   /// Write the buffered rows and flush the file.
   void flush();
   const std::string& path() const { return path_; }
+  /// The series declared so far, in the order of addSeries (handles 0 .. seriesCount() - 1).
+  int seriesCount() const;
+  const std::string& seriesName(int series) const;
+  const std::vector<SeriesColumn>& seriesColumns(int series) const;
 
  private:
   struct Impl;
