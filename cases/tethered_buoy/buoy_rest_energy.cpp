@@ -33,7 +33,6 @@ namespace {
 
 using namespace moorsph;
 
-constexpr std::size_t kBuoySurface = 1;  // after the tank's walls (buildTetheredBuoy)
 
 double argOr(int argc, char** argv, int i, double fallback) { return argc > i ? std::atof(argv[i]) : fallback; }
 
@@ -110,7 +109,7 @@ int main(int argc, char** argv) {
     auto w = co.coupling().appliedWrench(0);  // zero while the buoy is held
     if (co.time() < tank.release_time) {       // held: report the fluid's wrench all the same
       const auto& walls = *co.fluid().walls();
-      const auto held = walls.calcSurfaceWrench(kBuoySurface, walls.surfaceMotion(kBuoySurface).position);
+      const auto held = walls.calcSurfaceWrench(scene.buoy_surface, walls.surfaceMotion(scene.buoy_surface).position);
       w.force = held.force;
       w.torque = held.torque;
     }

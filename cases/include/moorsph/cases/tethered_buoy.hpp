@@ -88,6 +88,7 @@ struct TetheredBuoyScene {
   Eigen::Vector3d start;     ///< centroid when released [m]
   double still_level = 0.0;  ///< with the buoy at rest [m]
   std::size_t particles = 0;
+  std::size_t buoy_surface = 0;  ///< the buoy's boundary surface (Walls::calcSurfaceWrench)
 };
 
 inline TetheredBuoyScene buildTetheredBuoy(const TetheredBuoyTank& t) {
@@ -142,7 +143,7 @@ inline TetheredBuoyScene buildTetheredBuoy(const TetheredBuoyTank& t) {
   out.still_level = stillLevel(water.size());
   out.particles = water.size();
 
-  scene.boundary.addSurface(t.ring_sampling ? fluid::sampleSphereRings(out.start, b.radius, t.dx)
+  out.buoy_surface = scene.boundary.addSurface(t.ring_sampling ? fluid::sampleSphereRings(out.start, b.radius, t.dx)
                                             : fluid::sampleSphere<3>(out.start, b.radius, t.dx),
                             fluid::SurfaceInfo{"buoy", true, true, out.start});
   auto fluid_sim = std::make_unique<fluid::FluidSimulation<3>>(scene.setup, water, scene.boundary);
@@ -170,7 +171,7 @@ inline TetheredBuoyScene buildTetheredBuoy(const TetheredBuoyTank& t) {
   system->addLine("tether", at, bodies::makeMooringLine(line));
   system->initialize();
   out.co = std::make_unique<coupling::CoSimulation<3>>(std::move(fluid_sim), std::move(system),
-                                                       std::vector<coupling::CoupledBody>{{id, 1}},
+                                                       std::vector<coupling::CoupledBody>{{id, out.buoy_surface}},
                                                        coupling::CouplingOptions{t.release_time, 0.0});
   return out;
 }
