@@ -68,7 +68,82 @@ std::vector<Wave> upCrossingWaves(const Series& s, const Window& w) {
   return waves;
 }
 
+/// Least-squares fit of v ~ level + amplitude exp(-(t - t0) / tau) for one tau, with the
+/// trapezoidal time weights of the samples (so uneven sampling does not bias it).
+struct RelaxationFit {
+  double level = 0.0, amplitude = 0.0, tau = 0.0, squared_error = 0.0;
+};
+
+RelaxationFit fitRelaxation(const Series& c, double tau) {
+  const std::size_t n = c.time.size();
+  double sw = 0, se = 0, see = 0, sv = 0, sev = 0;
+  std::vector<double> weight(n), e(n);
+  for (std::size_t k = 0; k < n; ++k) {
+    const double left = k > 0 ? c.time[k] - c.time[k - 1] : 0.0;
+    const double right = k + 1 < n ? c.time[k + 1] - c.time[k] : 0.0;
+    weight[k] = 0.5 * (left + right);
+    e[k] = std::exp(-(c.time[k] - c.time.front()) / tau);
+    sw += weight[k];
+    se += weight[k] * e[k];
+    see += weight[k] * e[k] * e[k];
+    sv += weight[k] * c.value[k];
+    sev += weight[k] * e[k] * c.value[k];
+  }
+  RelaxationFit fit;
+  fit.tau = tau;
+  const double det = sw * see - se * se;
+  fit.amplitude = det > 0.0 ? (sw * sev - se * sv) / det : 0.0;
+  fit.level = (sv - fit.amplitude * se) / sw;
+  for (std::size_t k = 0; k < n; ++k) {
+    const double r = c.value[k] - fit.level - fit.amplitude * e[k];
+    fit.squared_error += weight[k] * r * r;
+  }
+  return fit;
+}
+
 }  // namespace
+
+double relaxedLevel(const Series& s, const Window& w) {
+  const Series c = clip(s, w);
+  const double span = c.time.back() - c.time.front();
+  if (!(span > 0.0)) throw std::invalid_argument("the window holds no time span");
+  // Coarse search over tau from span/200 to 20 span, then golden section around the best.
+  const int steps = 120;
+  const double lo = std::log(span / 200.0), hi = std::log(20.0 * span);
+  int best = 0;
+  double best_error = std::numeric_limits<double>::infinity();
+  for (int k = 0; k <= steps; ++k) {
+    const double err = fitRelaxation(c, std::exp(lo + (hi - lo) * k / steps)).squared_error;
+    if (err < best_error) {
+      best_error = err;
+      best = k;
+    }
+  }
+  double a = lo + (hi - lo) * std::max(best - 1, 0) / steps, b = lo + (hi - lo) * std::min(best + 1, steps) / steps;
+  const double g = 0.5 * (std::sqrt(5.0) - 1.0);
+  for (int it = 0; it < 60; ++it) {
+    const double x1 = b - g * (b - a), x2 = a + g * (b - a);
+    if (fitRelaxation(c, std::exp(x1)).squared_error < fitRelaxation(c, std::exp(x2)).squared_error)
+      b = x2;
+    else
+      a = x1;
+  }
+  const RelaxationFit fit = fitRelaxation(c, std::exp(0.5 * (a + b)));
+  // A constant fits (nearly) as well: the series is steady in the window. (The
+  // trapezoidal weights' weighted mean is the trapezoidal time average.)
+  const double mean = average(c);
+  double steady_error = 0.0;
+  for (std::size_t k = 0; k < c.time.size(); ++k) {
+    const double left = k > 0 ? c.time[k] - c.time[k - 1] : 0.0;
+    const double right = k + 1 < c.time.size() ? c.time[k + 1] - c.time[k] : 0.0;
+    steady_error += 0.5 * (left + right) * (c.value[k] - mean) * (c.value[k] - mean);
+  }
+  if (fit.squared_error >= 0.99 * steady_error) return mean;
+  if (fit.tau > span / std::log(2.0))
+    throw std::invalid_argument("the series has not gone half-way to its plateau in the window [" + num(w.from) + ", " +
+                                num(w.to) + "] s (fitted time constant " + num(fit.tau) + " s > span / ln 2): run longer");
+  return fit.level;
+}
 
 double valueAt(const Series& s, double t) {
   requireSamples(s);
@@ -182,6 +257,8 @@ const std::vector<MetricInfo>& metrics() {
       {"mean_value", "time average over [--from, --to] (e.g. equilibrium draught)", false, false, ""},
       {"cycle_mean", "time average over the whole zero-up-crossing cycles in the window (an oscillating equilibrium)", false,
        false, ""},
+      {"relaxed_level", "plateau of v_inf + A exp(-t/tau) fitted over the window (a quantity still creeping to equilibrium)",
+       false, false, ""},
       {"peak_amplitude", "largest |v - v(--from)| over the window", false, false, ""},
       {"max_value", "largest value in the window (e.g. an impact pressure peak)", false, false, ""},
       {"time_of_max", "time [s] of the largest value in the window (an arrival or impact time)", false, false, ""},
@@ -206,6 +283,7 @@ double evaluateMetric(const std::string& name, const Series& s, const MetricPara
   }
   if (name == "mean_value") return meanValue(s, p.window);
   if (name == "cycle_mean") return cycleMean(s, p.window);
+  if (name == "relaxed_level") return relaxedLevel(s, p.window);
   if (name == "peak_amplitude") return peakAmplitude(s, p.window);
   if (name == "max_value") return maxValue(s, p.window);
   if (name == "time_of_max") return timeOfMax(s, p.window);

@@ -34,6 +34,17 @@ double meanValue(const Series& s, const Window& w);
 /// body's mean offset) without the bias a window of a fractional number of periods
 /// leaves (up to amplitude / (pi x cycles)). Throws without a complete cycle.
 double cycleMean(const Series& s, const Window& w);
+/// The level a relaxing quantity settles to: v(t) ~ v_inf + A exp(-(t - from) / tau)
+/// fitted to the samples in the window by least squares (time-weighted; tau by a
+/// search in log tau, v_inf and A linear for each tau), returning v_inf. For a
+/// quantity whose mean still creeps towards equilibrium after the start has rung out
+/// (a held body's buoyancy while the water next to it re-packs, a gauge's set-down),
+/// where any window mean depends on where the window sits. A superposed oscillation
+/// averages out when the window holds several periods. A series that does not relax
+/// (the exponential does not fit it better than a constant by 1%) gives the window
+/// mean. Throws when more than half the fitted relaxation lies beyond the window
+/// (tau > span / ln 2): the plateau would be an extrapolation.
+double relaxedLevel(const Series& s, const Window& w);
 /// Largest |v - v(start of window)|: the excursion from the state at the window start
 /// (e.g. a released body's largest heave displacement, a gauge's largest rise).
 double peakAmplitude(const Series& s, const Window& w);

@@ -61,6 +61,27 @@ TEST(StudyMetrics, CycleMeanRemovesTheBiasOfAFractionalWindow) {
   EXPECT_THROW(st::cycleMean(draught, {1.5, 1.8}), std::invalid_argument);  // less than one cycle
 }
 
+TEST(StudyMetrics, RelaxedLevelIsThePlateauOfACreepingMean) {
+  // A held body's buoyancy: 46 N relaxing to 39.5 N with tau = 1.5 s, under a 0.45 s
+  // slosh of 2 N. Any window mean depends on where the window sits; the fit does not.
+  const auto creep = [](double t) { return 39.5 + 6.5 * std::exp(-t / 1.5) + 2.0 * std::sin(2.0 * kPi * t / 0.45); };
+  const auto s = sample(creep, 0.0, 6.0, 0.005);
+  EXPECT_GT(st::meanValue(s, {1.0, 6.0}) - 39.5, 0.5);
+  // (11.1 slosh periods: the fractional one leaves ~0.15 N, 2% of the relaxation.)
+  EXPECT_NEAR(st::relaxedLevel(s, {1.0, 6.0}), 39.5, 0.2);
+  EXPECT_NEAR(st::relaxedLevel(sample([](double t) { return 2.0 - 0.3 * std::exp(-t / 0.7); }, 0.0, 4.0, 0.01), {0.5, 4.0}),
+              2.0, 1e-6);
+  // Steady: a constant under an oscillation gives its mean.
+  const auto steady = sample([](double t) { return 5.0 + 0.2 * std::cos(2.0 * kPi * t / 0.3); }, 0.0, 3.0, 0.002);
+  EXPECT_NEAR(st::relaxedLevel(steady, {0.0, 3.0}), 5.0, 0.01);
+  // Not half-way there: a steady ramp (or tau = 4 s seen over 1.5 s) is refused.
+  EXPECT_THROW(st::relaxedLevel(sample([](double t) { return 1.0 - 0.1 * t; }, 0.0, 2.0, 0.01), {0.0, 2.0}),
+               std::invalid_argument);
+  const auto smooth = sample([](double t) { return 39.5 + 6.5 * std::exp(-t / 1.5); }, 0.0, 6.0, 0.005);
+  EXPECT_THROW(st::relaxedLevel(smooth, {1.0, 1.6}), std::invalid_argument);
+  EXPECT_NEAR(st::relaxedLevel(smooth, {1.0, 3.2}), 39.5, 1e-6);  // tau = 1.5 s < 2.2 s / ln 2
+}
+
 TEST(StudyMetrics, PeakAmplitudeIsTheLargestExcursionFromTheWindowStart) {
   const auto s = sample([](double t) { return 2.0 + 0.5 * std::sin(2.0 * kPi * t); }, 0.0, 3.0, 1e-3);
   EXPECT_NEAR(st::peakAmplitude(s, {0.0, 1.0}), 0.5, 1e-9);
@@ -121,7 +142,7 @@ TEST(StudyMetrics, RmsDifferenceAgainstAReferenceSeries) {
 }
 
 TEST(StudyMetrics, RegistryNamesEveryMetric) {
-  for (const char* name : {"front_position", "value_at", "mean_value", "cycle_mean", "peak_amplitude", "first_peak", "max_value", "time_of_max", "wave_height",
+  for (const char* name : {"front_position", "value_at", "mean_value", "cycle_mean", "relaxed_level", "peak_amplitude", "first_peak", "max_value", "time_of_max", "wave_height",
                            "period_between_peaks", "gauge_rms"})
     EXPECT_NE(st::findMetric(name), nullptr) << name;
   EXPECT_EQ(st::findMetric("front"), nullptr);
