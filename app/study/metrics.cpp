@@ -68,8 +68,19 @@ std::vector<Wave> upCrossingWaves(const Series& s, const Window& w) {
   return waves;
 }
 
-/// Least-squares fit of v ~ level + amplitude exp(-(t - t0) / tau) for one tau, with the
-/// trapezoidal time weights of the samples (so uneven sampling does not bias it).
+/// Trapezoidal time weights of the samples: sum_k w_k v_k is the trapezoidal integral, so
+/// the weighted mean is average() and uneven sampling does not bias a fit.
+std::vector<double> trapezoidWeights(const Series& c) {
+  const std::size_t n = c.time.size();
+  std::vector<double> weight(n, 0.0);
+  for (std::size_t k = 0; k + 1 < n; ++k) {
+    weight[k] += 0.5 * (c.time[k + 1] - c.time[k]);
+    weight[k + 1] += 0.5 * (c.time[k + 1] - c.time[k]);
+  }
+  return weight;
+}
+
+/// Least-squares fit of v ~ level + amplitude exp(-(t - t0) / tau) for one tau.
 struct RelaxationFit {
   double level = 0.0, amplitude = 0.0, tau = 0.0, squared_error = 0.0;
 };
@@ -77,11 +88,9 @@ struct RelaxationFit {
 RelaxationFit fitRelaxation(const Series& c, double tau) {
   const std::size_t n = c.time.size();
   double sw = 0, se = 0, see = 0, sv = 0, sev = 0;
-  std::vector<double> weight(n), e(n);
+  const std::vector<double> weight = trapezoidWeights(c);
+  std::vector<double> e(n);
   for (std::size_t k = 0; k < n; ++k) {
-    const double left = k > 0 ? c.time[k] - c.time[k - 1] : 0.0;
-    const double right = k + 1 < n ? c.time[k + 1] - c.time[k] : 0.0;
-    weight[k] = 0.5 * (left + right);
     e[k] = std::exp(-(c.time[k] - c.time.front()) / tau);
     sw += weight[k];
     se += weight[k] * e[k];
@@ -129,15 +138,11 @@ double relaxedLevel(const Series& s, const Window& w) {
       a = x1;
   }
   const RelaxationFit fit = fitRelaxation(c, std::exp(0.5 * (a + b)));
-  // A constant fits (nearly) as well: the series is steady in the window. (The
-  // trapezoidal weights' weighted mean is the trapezoidal time average.)
+  // A constant fits (nearly) as well: the series is steady in the window.
   const double mean = average(c);
+  const std::vector<double> weight = trapezoidWeights(c);
   double steady_error = 0.0;
-  for (std::size_t k = 0; k < c.time.size(); ++k) {
-    const double left = k > 0 ? c.time[k] - c.time[k - 1] : 0.0;
-    const double right = k + 1 < c.time.size() ? c.time[k + 1] - c.time[k] : 0.0;
-    steady_error += 0.5 * (left + right) * (c.value[k] - mean) * (c.value[k] - mean);
-  }
+  for (std::size_t k = 0; k < c.time.size(); ++k) steady_error += weight[k] * (c.value[k] - mean) * (c.value[k] - mean);
   if (fit.squared_error >= 0.99 * steady_error) return mean;
   if (fit.tau > span / std::log(2.0))
     throw std::invalid_argument("the series has not gone half-way to its plateau in the window [" + num(w.from) + ", " +
