@@ -85,10 +85,9 @@ struct RelaxationFit {
   double level = 0.0, amplitude = 0.0, tau = 0.0, squared_error = 0.0;
 };
 
-RelaxationFit fitRelaxation(const Series& c, double tau) {
+RelaxationFit fitRelaxation(const Series& c, const std::vector<double>& weight, double tau) {
   const std::size_t n = c.time.size();
   double sw = 0, se = 0, see = 0, sv = 0, sev = 0;
-  const std::vector<double> weight = trapezoidWeights(c);
   std::vector<double> e(n);
   for (std::size_t k = 0; k < n; ++k) {
     e[k] = std::exp(-(c.time[k] - c.time.front()) / tau);
@@ -116,13 +115,15 @@ double relaxedLevel(const Series& s, const Window& w) {
   const Series c = clip(s, w);
   const double span = c.time.back() - c.time.front();
   if (!(span > 0.0)) throw std::invalid_argument("the window holds no time span");
+  const std::vector<double> weight = trapezoidWeights(c);
+  const auto squaredError = [&](double log_tau) { return fitRelaxation(c, weight, std::exp(log_tau)).squared_error; };
   // Coarse search over tau from span/200 to 20 span, then golden section around the best.
   const int steps = 120;
   const double lo = std::log(span / 200.0), hi = std::log(20.0 * span);
   int best = 0;
   double best_error = std::numeric_limits<double>::infinity();
   for (int k = 0; k <= steps; ++k) {
-    const double err = fitRelaxation(c, std::exp(lo + (hi - lo) * k / steps)).squared_error;
+    const double err = squaredError(lo + (hi - lo) * k / steps);
     if (err < best_error) {
       best_error = err;
       best = k;
@@ -132,15 +133,14 @@ double relaxedLevel(const Series& s, const Window& w) {
   const double g = 0.5 * (std::sqrt(5.0) - 1.0);
   for (int it = 0; it < 60; ++it) {
     const double x1 = b - g * (b - a), x2 = a + g * (b - a);
-    if (fitRelaxation(c, std::exp(x1)).squared_error < fitRelaxation(c, std::exp(x2)).squared_error)
+    if (squaredError(x1) < squaredError(x2))
       b = x2;
     else
       a = x1;
   }
-  const RelaxationFit fit = fitRelaxation(c, std::exp(0.5 * (a + b)));
+  const RelaxationFit fit = fitRelaxation(c, weight, std::exp(0.5 * (a + b)));
   // A constant fits (nearly) as well: the series is steady in the window.
   const double mean = average(c);
-  const std::vector<double> weight = trapezoidWeights(c);
   double steady_error = 0.0;
   for (std::size_t k = 0; k < c.time.size(); ++k) steady_error += weight[k] * (c.value[k] - mean) * (c.value[k] - mean);
   if (fit.squared_error >= 0.99 * steady_error) return mean;
