@@ -30,8 +30,17 @@ std::vector<SeriesTerm> parseSeriesExpression(const std::string& text) {
     term.sign = sign;
     char* end = nullptr;
     const double v = std::strtod(t.c_str(), &end);
-    if (*end == '\0' && std::isfinite(v)) term.constant = v;
-    else term.name = t;
+    if (*end == '\0' && std::isfinite(v)) {
+      term.constant = v;
+    } else if (const auto star = t.find('*'); star != std::string::npos && star > 0 &&
+               (term.factor = std::strtod(t.c_str(), &end), end == t.c_str() + star)) {
+      // "NUMBER*NAME"; a '*' after anything but a number stays part of the name
+      if (!std::isfinite(term.factor)) throw bad("'" + t + "': the factor is not a finite number");
+      term.name = t.substr(star + 1);
+      if (term.name.empty()) throw bad("'" + t + "' has a factor but no series after '*'");
+    } else {
+      term.name = t;
+    }
     terms.push_back(term);
     expect_term = false;
   }
@@ -60,7 +69,7 @@ Series combineSeries(const std::vector<SeriesTerm>& terms, const std::function<S
     if (t < lo || t > hi) continue;
     double v = 0.0;
     for (std::size_t k = 0; k < terms.size(); ++k)
-      v += terms[k].sign * (terms[k].name.empty() ? terms[k].constant : valueAt(loaded[k], t));
+      v += terms[k].sign * (terms[k].name.empty() ? terms[k].constant : terms[k].factor * valueAt(loaded[k], t));
     sum.time.push_back(t);
     sum.value.push_back(v);
   }

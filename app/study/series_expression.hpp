@@ -4,7 +4,9 @@
 // floating box's draught "gauges/G_left - body_box/y + 0.05" (water level minus the
 // box centre plus its half-height) or a relative wave elevation at the bow. Terms are
 // separated by " + " or " - " with spaces around the sign (names and numbers such as
-// 1e-3 hold none); a plain "GROUP/COLUMN" is the one-term case.
+// 1e-3 hold none); a plain "GROUP/COLUMN" is the one-term case. A series term may carry
+// a factor, "0.125*gauges/G1": eight such terms are the mean of eight gauges (a floating
+// sphere's surrounding level, METHOD.md 6.1).
 #include <functional>
 #include <string>
 #include <vector>
@@ -15,6 +17,7 @@ namespace moorsph::app::study {
 struct SeriesTerm {
   double sign = 1.0;     ///< +1 or -1
   std::string name;      ///< GROUP/COLUMN or "front"; empty for a constant
+  double factor = 1.0;   ///< a series term's scale ("0.125*gauges/G1")
   double constant = 0.0; ///< the value of a constant term
 };
 

@@ -18,7 +18,8 @@ inline CLI::App* addStudyCommand(CLI::App& app, StudyOptions& o) {
       ->required();
   cmd->add_option("--metric", o.metric, metric_help)->required();
   cmd->add_option("--series", o.series, "series.h5 column GROUP/COLUMN the metric reads (e.g. gauges/G_mid), or a sum of columns and numbers "
-                  "with spaced signs, e.g. \"gauges/G_left - body_box/y + 0.05\" (a draught)");
+                  "with spaced signs, e.g. \"gauges/G_left - body_box/y + 0.05\" (a draught); a column may carry a factor, "
+                  "\"0.5*gauges/G1 + 0.5*gauges/G2\" (a mean)");
   cmd->add_option("--reference", o.reference,
                   "reference: a value, or a CSV file time,value (the metric applied to it; gauge_rms compares with it); "
                   "default: Richardson extrapolate of the three finest runs");

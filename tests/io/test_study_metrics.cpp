@@ -242,6 +242,32 @@ TEST(StudySeriesExpression, ADraughtFromAGaugeAndABodyHeight) {
   EXPECT_THROW(st::combineSeries(st::parseSeriesExpression("gauges/G + other/x"), load), std::runtime_error);
 }
 
+TEST(StudySeriesExpression, FactorsMakeAMeanOfGauges) {
+  // METHOD.md 6.1's surrounding level: the mean of eight gauges, here two for brevity,
+  // 0.5*G1 + 0.5*G2 - body/y + R. G1 = 0.21 + 0.01 sin, G2 = 0.21 - 0.01 sin (a sloshing
+  // mode the mean cancels), body at 0.20: 0.21 - 0.20 + 0.1 = 0.11 at every time.
+  const auto g1 = sample([](double t) { return 0.21 + 0.01 * std::sin(2.0 * kPi * t); }, 0.0, 2.0, 0.01);
+  const auto g2 = sample([](double t) { return 0.21 - 0.01 * std::sin(2.0 * kPi * t); }, 0.0, 2.0, 0.01);
+  const auto body = sample([](double) { return 0.20; }, 0.0, 2.0, 0.01);
+  const auto load = [&](const std::string& name) {
+    if (name == "gauges/G1") return g1;
+    if (name == "gauges/G2") return g2;
+    if (name == "body_s/y") return body;
+    throw std::runtime_error("unknown " + name);
+  };
+  const auto terms = st::parseSeriesExpression("0.5*gauges/G1 + 0.5*gauges/G2 - body_s/y + 0.1");
+  ASSERT_EQ(terms.size(), 4u);
+  EXPECT_EQ(terms[0].name, "gauges/G1");
+  EXPECT_DOUBLE_EQ(terms[0].factor, 0.5);
+  EXPECT_DOUBLE_EQ(terms[2].factor, 1.0);
+  const auto level = st::combineSeries(terms, load);
+  for (std::size_t i = 0; i < level.time.size(); i += 37) EXPECT_NEAR(level.value[i], 0.11, 1e-12);
+  EXPECT_EQ(st::parseSeriesExpression("probes/a*b")[0].name, "probes/a*b");  // not a number: part of the name
+  EXPECT_EQ(st::parseSeriesExpression("1e-1*gauges/G1")[0].factor, 0.1);
+  EXPECT_THROW(st::parseSeriesExpression("0.5* + gauges/G1"), std::invalid_argument);  // factor without a series
+  EXPECT_THROW(st::parseSeriesExpression("0.5*"), std::invalid_argument);
+}
+
 TEST(StudyArguments, DxListVaryAndSplitting) {
   EXPECT_EQ(st::parseDxList("0.005, 0.02,0.01"), (std::vector<double>{0.02, 0.01, 0.005}));
   EXPECT_THROW(st::parseDxList("0.01"), std::invalid_argument);
