@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <cstdlib>
+#include <filesystem>
 #include <string>
 #include <moorsph/fluid/waves/dispersion.hpp>
 #include <moorsph/io/scene_builder.hpp>
@@ -41,6 +42,19 @@ std::string errorOf(const std::string& text, const std::vector<std::string>& set
 }
 
 }  // namespace
+
+TEST(SceneLoader, EveryCaseSceneLoads) {
+  // Every scene shipped under cases/ passes the loader's validation (keys, units, ranges,
+  // the files it names): a scene added or edited without being run cannot rot unnoticed.
+  int scenes = 0;
+  for (const auto& entry : std::filesystem::recursive_directory_iterator(sourceDir() + "/cases")) {
+    if (entry.path().extension() != ".yaml") continue;
+    SCOPED_TRACE(entry.path().string());
+    EXPECT_NO_THROW(io::loadSceneFile(entry.path().string()));
+    ++scenes;
+  }
+  EXPECT_GE(scenes, 30);
+}
 
 TEST(SceneLoader, ExamplesLoadAndBuild) {
   for (const char* name : {"dam_break_2d", "dam_break_3d", "hydrostatic_tank_2d", "cylinder_in_dam_break_3d",
