@@ -3,10 +3,23 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 
 namespace moorsph::app::study {
+
+namespace {
+
+/// The finite number `text` spells in full, if it does.
+std::optional<double> wholeNumber(const std::string& text) {
+  char* end = nullptr;
+  const double v = std::strtod(text.c_str(), &end);
+  if (text.empty() || *end != '\0' || !std::isfinite(v)) return std::nullopt;
+  return v;
+}
+
+}  // namespace
 
 std::vector<SeriesTerm> parseSeriesExpression(const std::string& text) {
   std::istringstream in(text);
@@ -28,14 +41,11 @@ std::vector<SeriesTerm> parseSeriesExpression(const std::string& text) {
     }
     SeriesTerm term;
     term.sign = sign;
-    char* end = nullptr;
-    const double v = std::strtod(t.c_str(), &end);
-    if (*end == '\0' && std::isfinite(v)) {
-      term.constant = v;
-    } else if (const auto star = t.find('*'); star != std::string::npos && star > 0 &&
-               (term.factor = std::strtod(t.c_str(), &end), end == t.c_str() + star)) {
+    if (const auto number = wholeNumber(t)) {
+      term.constant = *number;
+    } else if (const auto star = t.find('*'); star != std::string::npos && wholeNumber(t.substr(0, star))) {
       // "NUMBER*NAME"; a '*' after anything but a number stays part of the name
-      if (!std::isfinite(term.factor)) throw bad("'" + t + "': the factor is not a finite number");
+      term.factor = *wholeNumber(t.substr(0, star));
       term.name = t.substr(star + 1);
       if (term.name.empty()) throw bad("'" + t + "' has a factor but no series after '*'");
     } else {

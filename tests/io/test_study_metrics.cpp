@@ -262,7 +262,9 @@ TEST(StudySeriesExpression, FactorsMakeAMeanOfGauges) {
   EXPECT_DOUBLE_EQ(terms[2].factor, 1.0);
   const auto level = st::combineSeries(terms, load);
   for (std::size_t i = 0; i < level.time.size(); i += 37) EXPECT_NEAR(level.value[i], 0.11, 1e-12);
-  EXPECT_EQ(st::parseSeriesExpression("probes/a*b")[0].name, "probes/a*b");  // not a number: part of the name
+  const auto starred = st::parseSeriesExpression("probes/a*b")[0];  // not a number: part of the name
+  EXPECT_EQ(starred.name, "probes/a*b");
+  EXPECT_DOUBLE_EQ(starred.factor, 1.0);
   EXPECT_EQ(st::parseSeriesExpression("1e-1*gauges/G1")[0].factor, 0.1);
   EXPECT_THROW(st::parseSeriesExpression("0.5* + gauges/G1"), std::invalid_argument);  // factor without a series
   EXPECT_THROW(st::parseSeriesExpression("0.5*"), std::invalid_argument);
