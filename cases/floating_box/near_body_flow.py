@@ -12,7 +12,14 @@ layers 0.5 dx thick by their gap to the surface, beside the unbounded dipole's
 --plot PNG, the particles around the body at two snapshots, coloured by pressure, with
 their ground-frame velocities.
 
-  near_body_flow.py RUN [--radius 0.05] [--dx 0.005] [--centre-x 0.3] [--plot PNG]
+With --forces, the budget along the surface of the first layer (gap < 1 dx) within 30 deg
+of the sides, per snapshot: the pressure term of METHOD.md 1 split into its P_i part
+-P_i/rho_i^2 sum_j m_j grad W_ij and its P_j part, the wall law of METHOD.md 2 summed over
+the body's boundary particles, and gravity, each as an acceleration up the surface. Kernel,
+spacing, c_s, b_off and wall strength are read from RUN/scene.resolved.yaml; the wall law's
+h is the kernel's (boundary_h_factor unset) and its form the reference one.
+
+  near_body_flow.py RUN [--radius 0.05] [--dx 0.005] [--centre-x 0.3] [--plot PNG] [--forces]
 """
 import argparse
 
@@ -56,6 +63,62 @@ def side_layers(o):
         print(f"{t:.3f}  {speed:.3f}  " + "  ".join(cells))
 
 
+def wendland_gradient_2d(r, h):
+    """dW/dr of the 2D Wendland C2 kernel, support 2h (METHOD.md 1)."""
+    q = r / h
+    return np.where(q < 2.0, 7.0 / (64.0 * np.pi * h * h) * (2.0 - q) ** 3 * (-10.0 * q) / h, 0.0)
+
+
+def wall_shape(q):
+    """S(q) of METHOD.md 2 (s = 8, d = 1)."""
+    return np.where((q > 0) & (q < 0.8), (0.8 / np.maximum(q, 1e-12)) ** 8, np.where((q >= 0.8) & (q < 1), 25 * (q - 1) ** 2, 0.0))
+
+
+def force_budget(o):
+    import yaml
+    from scipy.spatial import cKDTree
+    with open(o.run + "/scene.resolved.yaml") as f:
+        scene = yaml.safe_load(f)
+    dx, c = scene["resolution"]["dx"], scene["fluid"]["sound_speed"]
+    h = scene["method"]["h_factor"] * dx
+    offset, strength = scene["method"]["b_off"] * dx, scene["method"]["boundary_strength"]
+    mass, g = scene["fluid"].get("density", 1000.0) * dx * dx, 9.81
+    tb, yb, _, _ = body_state(o.run)
+    print("time [s]  up the surface at the sides [m/s^2]: pressure (P_i part + P_j part)  wall  gravity  sum  | layer speed [m/s]")
+    for t, kind, r, u, p in snapshots(o.run):
+        centre = np.array([o.centre_x, np.interp(t, tb, yb)])
+        fluid = kind == FLUID
+        rf, uf, pf = r[fluid], u[fluid], p[fluid]
+        rho = scene["fluid"].get("density", 1000.0) * (1.0 + pf / (scene["fluid"].get("density", 1000.0) * c * c / 7.0)) ** (1.0 / 7.0)
+        rb = r[~fluid]
+        rb = rb[np.abs(np.linalg.norm(rb - centre, axis=1) - o.radius) < 1e-3 * dx]
+        nb = (rb - centre) / o.radius
+        d = rf - centre
+        dist, theta = np.linalg.norm(d, axis=1), np.arctan2(d[:, 1], d[:, 0])
+        layer = np.where((dist < o.radius + dx) & (np.abs(np.cos(theta)) > np.cos(np.radians(30))))[0]
+        tree = cKDTree(rf)
+        rows = []
+        for i in layer:
+            up = np.array([-np.sin(theta[i]), np.cos(theta[i])])
+            up = up if up[1] > 0 else -up
+            js = np.array([j for j in tree.query_ball_point(rf[i], 2 * h) if j != i])
+            rij = rf[i] - rf[js]
+            grad = (wendland_gradient_2d(np.linalg.norm(rij, axis=1), h) / np.linalg.norm(rij, axis=1))[:, None] * rij
+            own = -(mass * pf[i] / rho[i] ** 2 * grad).sum(0) @ up
+            others = -(mass * (pf[js] / rho[js] ** 2)[:, None] * grad).sum(0) @ up
+            rik = rf[i] - rb
+            perp = np.einsum("kd,kd->k", rik, nb)
+            par = np.sqrt(np.maximum(np.einsum("kd,kd->k", rik, rik) - perp ** 2, 0.0))
+            push = strength * c * c / h * np.where((perp + offset > 0) & (par < dx), 1.0 - par / dx, 0.0) * \
+                wall_shape((np.maximum(perp, 0.0) + offset) / h)
+            wall = (push[:, None] * nb).sum(0) @ up
+            rows.append((own, others, wall, -g * up[1], uf[i] @ up))
+        a = np.array(rows)
+        total = a[:, :4].sum(1)
+        print(f"{t:.3f}  {a[:, 0].mean() + a[:, 1].mean():+7.2f} ({a[:, 0].mean():+6.2f} {a[:, 1].mean():+6.2f})  "
+              f"{a[:, 2].mean():+6.2f}  {a[:, 3].mean():+6.2f}  {total.mean():+6.2f} (rms {total.std():.1f})  | {a[:, 4].mean():+.3f}")
+
+
 def plot(o):
     import matplotlib
     matplotlib.use("Agg")
@@ -88,8 +151,11 @@ def main():
     p.add_argument("--dx", type=float, default=0.005)
     p.add_argument("--centre-x", type=float, default=0.3)
     p.add_argument("--plot")
+    p.add_argument("--forces", action="store_true")
     o = p.parse_args()
     side_layers(o)
+    if o.forces:
+        force_budget(o)
     if o.plot:
         plot(o)
 
