@@ -7,7 +7,7 @@ body released from rest starts an impulsive flow whose potential phi has dphi/dn
 walls and floor, phi = 0 on the free surface (the pressure impulse vanishes there), and
 dphi/dn = n_y on the body for unit upward speed. The added mass is then
 m_a = -rho * integral over the body of phi n_y ds (n pointing out of the body), i.e. twice the
-kinetic energy of the flow (Newman, Marine Hydrodynamics, 1977, sec. 4.10-4.13).
+kinetic energy of the flow (Newman, Marine Hydrodynamics, 1977, ch. 4).
 
 phi is solved by a direct boundary-element method with straight constant panels: for a
 collocation point x on the boundary, phi(x)/2 = integral [G dphi/dn - phi dG/dn] ds with
