@@ -27,12 +27,6 @@ double displacedVolume(double radius) {
   return D == 2 ? pi * radius * radius : 4.0 / 3.0 * pi * radius * radius * radius;
 }
 
-/// Potential-flow initial acceleration of a body of density ratio r at rest [m/s^2].
-template <int D>
-double releaseAcceleration(double ratio, double g = 9.81) {
-  return (1.0 - ratio) / (ratio + addedMassCoefficient<D>()) * g;
-}
-
 /// Tank 0.6 m (2D) or 0.3 m (3D) wide, 0.5 m of water; the body at `centre`.
 template <int D>
 coupling::CoSimulation<D> buildSubmergedBody(double dx, double ratio, double radius, const fluid::Vec<D>& centre,
