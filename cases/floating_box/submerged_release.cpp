@@ -23,17 +23,10 @@ namespace {
 
 using namespace moorsph;
 
-/// Potential-flow added-mass coefficient in the tank of cases::buildSubmergedBody: 2D from
-/// confined_added_mass.py (width 0.6, depth 0.5, R 0.05, centre 0.2 above the floor).
-template <int D>
-double tankAddedMassCoefficient() {
-  return D == 2 ? 1.0547 : cases::addedMassCoefficient<D>();
-}
-
 template <int D>
 void sweep(double dx, const std::vector<double>& ratios) {
-  const double radius = 0.05, release = 0.3, window = 0.1, g = 9.81;
-  const double added_mass_coefficient = tankAddedMassCoefficient<D>();
+  const double radius = 0.05, release = 0.3, window = 0.1;
+  const double added_mass_coefficient = cases::tankAddedMassCoefficient<D>();
   fluid::Vec<D> centre = fluid::Vec<D>::Constant(D == 2 ? 0.3 : 0.15);
   centre[1] = 0.2;
   std::printf("# %s R = %.3f m (%.1f dx), dx = %.4f m, release at %.2f s, C_a = %.4f\n", D == 2 ? "cylinder" : "sphere",
@@ -51,7 +44,7 @@ void sweep(double dx, const std::vector<double>& ratios) {
     const double t = co.time() - release;
     const auto& kin = co.bodies().kinematics(0);
     const double mean_accel = 2.0 * (kin.position[1] - centre[1]) / (t * t);
-    const double a0 = (1.0 - ratio) / (ratio + added_mass_coefficient) * g;
+    const double a0 = cases::releaseAcceleration(ratio, added_mass_coefficient);
     std::printf("%6.2f  %6s  %18.3f  %17.3f  %11.3f  %15.3f  %9zu\n", ratio, stable ? "yes" : "NO", mean_accel, a0,
                 mean_accel / a0, kin.velocity[1] / (a0 * t), co.fluid().fluid().size());
   }

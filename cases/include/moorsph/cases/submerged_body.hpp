@@ -27,6 +27,19 @@ double displacedVolume(double radius) {
   return D == 2 ? pi * radius * radius : 4.0 / 3.0 * pi * radius * radius * radius;
 }
 
+/// Potential-flow added-mass coefficient in the tank of buildSubmergedBody with R = 0.05 m
+/// at 0.2 m above the floor: 2D 1.0547 (cases/floating_box/confined_added_mass.py, boundary
+/// elements); 3D the unbounded sphere's 1/2 (the 3D tank's correction is not computed).
+template <int D>
+constexpr double tankAddedMassCoefficient() {
+  return D == 2 ? 1.0547 : addedMassCoefficient<D>();
+}
+
+/// Potential-flow initial acceleration of a body of density ratio r at rest [m/s^2].
+inline double releaseAcceleration(double ratio, double added_mass_coefficient, double g = 9.81) {
+  return (1.0 - ratio) / (ratio + added_mass_coefficient) * g;
+}
+
 /// Tank 0.6 m (2D) or 0.3 m (3D) wide, 0.5 m of water; the body at `centre`.
 template <int D>
 coupling::CoSimulation<D> buildSubmergedBody(double dx, double ratio, double radius, const fluid::Vec<D>& centre,
