@@ -274,13 +274,15 @@ void attachBodySeries(cases::RunRecorder<D>& recorder, const coupling::CoSimulat
     std::vector<io::SeriesColumn> load{{"Fx", "N" + per_span}, {"Fy", "N" + per_span}};
     if (D == 3) load.insert(load.end(), {{"Fz", "N"}, {"Mx", "N m"}, {"My", "N m"}});
     load.push_back({"Mz", "N m" + per_span});
-    recorder.addSeries("wrench_" + name, load, [&co, k](const fluid::FluidSimulation<D>&) {
-      const bodies::BodyWrench& w = co.coupling().appliedWrench(k);
+    recorder.addSeries("wrench_" + name, load, [&co, k](const fluid::FluidSimulation<D>& sim) {
+      // While held, the load the hold restrains (the held body's buoyancy as the water settles).
+      const bool held = sim.time() <= co.coupling().options().release_time;
+      const bodies::BodyWrench& w = held ? co.coupling().fluidWrench(k) : co.coupling().appliedWrench(k);
       std::vector<double> v{w.force.x(), w.force.y()};
       if (D == 3) v.insert(v.end(), {w.force.z(), w.torque.x(), w.torque.y()});
       v.push_back(w.torque.z());
       return v;
-    }, "fluid wrench applied to the body (ground frame, moment about the reference point; ramped as coupling.ramp_time says)");
+    }, "fluid wrench applied to the body (ground frame, moment about the reference point; ramped as coupling.ramp_time says, wall contact included); while the body is held, the fluid's wrench on it that the hold restrains");
     attachPointSeries(recorder, co, c.bodies[k], body);
     if (c.bodies[k].green_water) attachGreenWaterSeries(recorder, co, c.bodies[k], body);
   }

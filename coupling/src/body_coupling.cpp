@@ -32,7 +32,7 @@ fluid::RigidMotion<D> toRigidMotion(const bodies::BodyKinematics& k, double tau)
 template <int D>
 BodyCoupling<D>::BodyCoupling(bodies::MultibodySystem& system, fluid::Walls<D>* walls, std::vector<CoupledBody> links,
                               CouplingOptions options)
-    : system_(system), walls_(walls), links_(std::move(links)), options_(options), applied_(links_.size()) {
+    : system_(system), walls_(walls), links_(std::move(links)), options_(options), applied_(links_.size()), fluid_(links_.size()) {
   if (!walls_) throw std::invalid_argument("effects: 'bodies' needs 'walls' (bodies are boundary surfaces)");
   if (!system_.isInitialized()) throw std::invalid_argument("bodies: initialize() the multibody system first");
   for (const CoupledBody& l : links_) {
@@ -67,13 +67,22 @@ void BodyCoupling<D>::placeSurfaces(double t, bool extrapolate) {
 }
 
 template <int D>
+void BodyCoupling<D>::sumFluidWrenches() {
+  for (std::size_t k = 0; k < links_.size(); ++k) {
+    const fluid::SurfaceWrench w =
+        walls_->calcSurfaceWrench(links_[k].surface, walls_->surfaceMotion(links_[k].surface).position);
+    fluid_[k].force = w.force;
+    fluid_[k].torque = w.torque;
+  }
+}
+
+template <int D>
 void BodyCoupling<D>::applyFluidWrenches(double t) {
   const double factor = ramp(t);
   for (std::size_t k = 0; k < links_.size(); ++k) {
     const auto& origin = walls_->surfaceMotion(links_[k].surface).position;
-    const fluid::SurfaceWrench w = walls_->calcSurfaceWrench(links_[k].surface, origin);
-    applied_[k].force = factor * w.force;
-    applied_[k].torque = factor * w.torque;
+    applied_[k].force = factor * fluid_[k].force;
+    applied_[k].torque = factor * fluid_[k].torque;
     if (contact_) {
       const bodies::BodyWrench c = contact_->wrench(links_[k].surface, origin);
       applied_[k].force += c.force;
@@ -94,6 +103,7 @@ void BodyCoupling<D>::advanceTo(double t, fluid::StepStage stage) {
       placeSurfaces(t, true);
       break;
     case fluid::StepStage::Corrected: {
+      sumFluidWrenches();
       if (t <= options_.release_time) break;  // held: the fluid settles around the bodies
       applyFluidWrenches(t);
       const auto simbody_start = std::chrono::steady_clock::now();

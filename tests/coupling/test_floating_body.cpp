@@ -28,8 +28,15 @@ class StepProbe final : public fluid::FluidEffect<2> {
   const char* name() const override { return "step_probe"; }
   void addRates(fluid::FluidContext<2>&) override {}
   void advanceTo(double t, fluid::StepStage stage) override {
-    if (stage != fluid::StepStage::Corrected || t <= coupling_.options().release_time) return;
+    if (stage != fluid::StepStage::Corrected) return;
     const auto reactions = walls_.calcSurfaceWrench(1, walls_.surfaceMotion(1).position);
+    // (Force only: the surface has moved since the torque was taken about its origin.)
+    max_fluid_error = std::max(max_fluid_error, (reactions.force - coupling_.fluidWrench(0).force).norm());
+    if (t <= coupling_.options().release_time) {  // held: nothing applied, the fluid's load still read
+      max_held_applied = std::max(max_held_applied, coupling_.appliedWrench(0).force.norm());
+      max_held_load = std::max(max_held_load, coupling_.fluidWrench(0).force.norm());
+      return;
+    }
     max_hold_error = std::max(max_hold_error, (reactions.force - coupling_.appliedWrench(0).force).norm());
     forces.push_back(coupling_.appliedWrench(0).force);
     velocities.push_back(system_.kinematics(0).velocity);
@@ -37,6 +44,9 @@ class StepProbe final : public fluid::FluidEffect<2> {
     bottoms.push_back(system_.kinematics(0).position[1]);
   }
   double max_hold_error = 0.0;
+  double max_fluid_error = 0.0;   ///< fluidWrench against the surface's reactions, every corrector
+  double max_held_applied = 0.0;  ///< largest wrench applied while the body is held
+  double max_held_load = 0.0;     ///< largest fluid force on the held body
   std::vector<Eigen::Vector3d> forces, velocities;
   std::vector<double> times, bottoms;
 
@@ -66,6 +76,11 @@ TEST(FloatingBody, BoxFloatsAtArchimedesDraughtAndCouplingHoldsPredictedWrench) 
 
   // Zero-order hold of the predicted-state reactions, and Newton per step.
   EXPECT_EQ(p->max_hold_error, 0.0);
+  // The fluid's own wrench is the surface's reactions at every corrector, the hold included;
+  // while held nothing reaches the body, though the water pushes on it (Archimedes 98.1 N/m).
+  EXPECT_EQ(p->max_fluid_error, 0.0);
+  EXPECT_EQ(p->max_held_applied, 0.0);
+  EXPECT_GT(p->max_held_load, 0.5 * box.mass() * 9.81);
   double worst_newton = 0.0;
   for (std::size_t k = 1; k < p->times.size(); ++k) {
     const double dt = p->times[k] - p->times[k - 1];

@@ -58,8 +58,13 @@ class BodyCoupling final : public fluid::FluidEffect<D> {
   void addRates(fluid::FluidContext<D>&) override {}
   void advanceTo(double t, fluid::StepStage stage) override;
 
-  /// The fluid wrench last applied to link k (ground frame, torque about the body origin).
+  /// The fluid wrench last applied to link k (ground frame, torque about the body origin):
+  /// zero while the bodies are held, ramped after release, wall contact included.
   const bodies::BodyWrench& appliedWrench(std::size_t k) const { return applied_.at(k); }
+  /// The fluid's own wrench on link k at the last corrector (the reactions of its surface,
+  /// unramped, without wall contact). Kept during the hold too, where it is the load the
+  /// hold restrains: a held body's buoyancy can be read while the water settles round it.
+  const bodies::BodyWrench& fluidWrench(std::size_t k) const { return fluid_.at(k); }
   double bodySeconds() const { return body_seconds_; }        ///< wall time in Simbody
   double exchangeSeconds() const { return exchange_seconds_; }  ///< wall time in the exchange
   const CouplingOptions& options() const { return options_; }
@@ -71,6 +76,7 @@ class BodyCoupling final : public fluid::FluidEffect<D> {
 
  private:
   void placeSurfaces(double t, bool extrapolate);
+  void sumFluidWrenches();
   void applyFluidWrenches(double t);
   double ramp(double t) const;
 
@@ -79,6 +85,7 @@ class BodyCoupling final : public fluid::FluidEffect<D> {
   std::vector<CoupledBody> links_;
   CouplingOptions options_;
   std::vector<bodies::BodyWrench> applied_;
+  std::vector<bodies::BodyWrench> fluid_;
   double body_seconds_ = 0.0;
   double exchange_seconds_ = 0.0;
   std::optional<fluid::Domain<D>> guard_domain_;
