@@ -23,10 +23,11 @@ import numpy as np
 RHO, R, G, CA = 1000.0, 0.05, 9.81, 1.0547
 
 
-def deficit(run, release):
-    f = h5py.File(run + "/series.h5", "r")
-    t = f["velocity_cylinder/time"][:]
-    v = f["velocity_cylinder/vy"][:]
+def first_100ms(run, release):
+    """Time since release and the cylinder's upward speed over the first 100 ms."""
+    with h5py.File(run + "/series.h5", "r") as f:
+        t = f["velocity_cylinder/time"][:]
+        v = f["velocity_cylinder/vy"][:]
     w = (t >= release) & (t <= release + 0.1 + 1e-6)
     return t[w] - release, v[w]
 
@@ -50,7 +51,7 @@ def main():
     a0 = (1.0 - r) * G / (r + CA)
     print("a0 = %.4f m/s^2, m = %.4f kg/m, m_a = %.3f kg/m" % (a0, a.mass, ma))
     for run in a.runs:
-        tt, vv = deficit(run, a.release)
+        tt, vv = first_100ms(run, a.release)
         J = (a.mass + ma) * (a0 * tt - vv)
         print(run)
         print("  t [ms]  v/(a0 t)  J [N s/m]")

@@ -106,13 +106,9 @@ int main(int argc, char** argv) {
     co.step();
     const double dt = co.time() - before;
     before = co.time();
-    auto w = co.coupling().appliedWrench(0);  // zero while the buoy is held
-    if (co.time() < tank.release_time) {       // held: report the fluid's wrench all the same
-      const auto& walls = *co.fluid().walls();
-      const auto held = walls.calcSurfaceWrench(scene.buoy_surface, walls.surfaceMotion(scene.buoy_surface).position);
-      w.force = held.force;
-      w.torque = held.torque;
-    }
+    // Held, nothing is applied: report the fluid's wrench on the held buoy all the same.
+    const bool held = co.time() <= tank.release_time;
+    const auto& w = held ? co.coupling().fluidWrench(0) : co.coupling().appliedWrench(0);
     const auto k = co.bodies().kinematics(0);
     Eigen::Vector3d horizontal = w.force;
     horizontal[1] = 0.0;
