@@ -7,6 +7,7 @@
 // mass, so its initial acceleration is a0 = (1 - r)/(r + C_a) g for density ratio r.
 // Header only: it needs bodies/, which a build without MOORSPH_WITH_BODIES lacks.
 #include <cmath>
+#include <functional>
 #include <memory>
 #include <moorsph/coupling/co_simulation.hpp>
 #include <moorsph/fluid/shape_sampling.hpp>
@@ -40,10 +41,20 @@ inline double releaseAcceleration(double ratio, double added_mass_coefficient, d
   return (1.0 - ratio) / (ratio + added_mass_coefficient) * g;
 }
 
+/// The fluid side of buildSubmergedBody: tank, water (kept at least dx/2 outside the
+/// body) and the body's surface, movable and tracking its reactions. `adjust` may change
+/// the tank's fluid set-up (method options) before it is built.
+template <int D>
+struct SubmergedBodyFluid {
+  fluid::Scene<D> scene;
+  fluid::FluidParticles<D> water;
+  std::size_t body_surface = 0;
+};
+
 /// Tank 0.6 m (2D) or 0.3 m (3D) wide, 0.5 m of water; the body at `centre`.
 template <int D>
-coupling::CoSimulation<D> buildSubmergedBody(double dx, double ratio, double radius, const fluid::Vec<D>& centre,
-                                              double release) {
+SubmergedBodyFluid<D> buildSubmergedBodyFluid(double dx, double radius, const fluid::Vec<D>& centre,
+                                              const std::function<void(fluid::TankSpec<D>&)>& adjust = {}) {
   fluid::TankSpec<D> spec;
   const double width = D == 2 ? 0.6 : 0.3;  // 3D: a smaller tank keeps the particle count for this machine
   spec.size = fluid::Vec<D>::Constant(width);
@@ -54,14 +65,25 @@ coupling::CoSimulation<D> buildSubmergedBody(double dx, double ratio, double rad
   spec.fluid.sound_speed = 10.0 * std::sqrt(2.0 * 9.81 * 0.5);
   spec.fluid.mu = 0.01;
   spec.fluid.effects = {"pressure", "viscosity", "xsph", "density_diffusion", "gravity", "walls"};
-  auto scene = fluid::buildTankScene<D>(spec);
-  fluid::FluidParticles<D> water;  // fluid starts at least dx/2 outside the body
-  for (std::size_t i = 0; i < scene.fluid.size(); ++i)
-    if ((scene.fluid.r[i] - centre).norm() >= radius + 0.5 * dx)
-      water.add(scene.fluid.r[i], scene.fluid.v[i], scene.fluid.rho[i], scene.fluid.m[i]);
+  if (adjust) adjust(spec);
+  SubmergedBodyFluid<D> out{fluid::buildTankScene<D>(spec), {}, 0};
+  const auto& all = out.scene.fluid;
+  for (std::size_t i = 0; i < all.size(); ++i)
+    if ((all.r[i] - centre).norm() >= radius + 0.5 * dx) out.water.add(all.r[i], all.v[i], all.rho[i], all.m[i]);
   Eigen::Vector3d origin = Eigen::Vector3d::Zero();
   origin.head<D>() = centre;
-  scene.boundary.addSurface(fluid::sampleSphere<D>(centre, radius, dx), fluid::SurfaceInfo{"body", true, true, origin});
+  out.body_surface = out.scene.boundary.addSurface(fluid::sampleSphere<D>(centre, radius, dx),
+                                                   fluid::SurfaceInfo{"body", true, true, origin});
+  return out;
+}
+
+/// The body of buildSubmergedBodyFluid, of density ratio `ratio`, held until `release`.
+template <int D>
+coupling::CoSimulation<D> buildSubmergedBody(double dx, double ratio, double radius, const fluid::Vec<D>& centre,
+                                              double release) {
+  auto f = buildSubmergedBodyFluid<D>(dx, radius, centre);
+  Eigen::Vector3d origin = Eigen::Vector3d::Zero();
+  origin.head<D>() = centre;
   auto system = std::make_unique<bodies::MultibodySystem>();
   bodies::RigidBodySpec body;
   body.name = "body";
@@ -72,7 +94,7 @@ coupling::CoSimulation<D> buildSubmergedBody(double dx, double ratio, double rad
   body.initial.position = origin;
   system->addBody(body);
   system->initialize();
-  return coupling::CoSimulation<D>(std::make_unique<fluid::FluidSimulation<D>>(scene.setup, water, scene.boundary),
+  return coupling::CoSimulation<D>(std::make_unique<fluid::FluidSimulation<D>>(f.scene.setup, f.water, f.scene.boundary),
                                    std::move(system), {{0, 1}}, {release, 0.0});
 }
 

@@ -1,0 +1,159 @@
+// The released light cylinder's missing speed (docs/accuracy-cost.md, "Light cylinder
+// released under water") asked the other way round: move the cylinder along a prescribed
+// path and measure the force the water puts on it. Same tank, body and fluid set-up as
+// cases/include/moorsph/cases/submerged_body.hpp (2D, R = 0.05 m centred 0.2 m above the
+// floor of a 0.6 m tank with 0.5 m of water), but no body dynamics: the surface is held
+// for 0.3 s while the water settles and then moved straight up by one of
+//   accel A          y - y0 = A s^2 / 2 (s = t - 0.3 s): with A = a0 = 6.2547 m/s^2 the
+//                    path potential flow gives the free cylinder of density ratio 0.2;
+//   speed U RAMP     speed ramped linearly from 0 to U over RAMP seconds, then held.
+// Potential flow in this tank puts the force F = rho g V - C_a rho V a on it (C_a =
+// 1.0547, cases/floating_box/confined_added_mass.py; the change of C_a over the 10-40 mm
+// the body moves is neglected). The program prints, every millisecond, the measured
+// vertical force, that potential-flow force and their difference, the resistance
+// R = F_pf - F (positive: the water holds the body back more than potential flow does).
+// A drag grows as U^2, a viscous history force as U sqrt(s), an added-mass error
+// as the acceleration, so runs at several U and A tell the forms apart.
+// Method options to find what sets R (each KEY=VALUE): cs (sound speed factor, c_s =
+// F sqrt(2 g 0.5), default 10), mu [Pa s] (0.01), boff (0.5), h (h/dx, 1.2), strength
+// (0.01), delta (density diffusion, 0.1), xsph (eps, 0.5), effects (comma list, default
+// pressure,viscosity,xsph,density_diffusion,gravity,walls).
+// Usage: moorsph_towed_cylinder DX accel A | speed U RAMP [END_AFTER_START=0.1] [KEY=VALUE...]
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <memory>
+#include <string>
+#include <moorsph/cases/submerged_body.hpp>
+#include <moorsph/fluid/fluid_simulation.hpp>
+
+namespace {
+
+using namespace moorsph;
+
+/// The body's prescribed vertical path: height above its start and speed at time s
+/// after the start of the motion.
+struct Path {
+  bool accelerate = true;
+  double a = 0.0, u = 0.0, ramp = 0.0;
+  double rise(double s) const {
+    if (s <= 0.0) return 0.0;
+    if (accelerate) return 0.5 * a * s * s;
+    if (s < ramp) return 0.5 * u / ramp * s * s;
+    return 0.5 * u * ramp + u * (s - ramp);
+  }
+  double speed(double s) const {
+    if (s <= 0.0) return 0.0;
+    if (accelerate) return a * s;
+    return s < ramp ? u * s / ramp : u;
+  }
+  double acceleration(double s) const {
+    if (s <= 0.0) return 0.0;
+    if (accelerate) return a;
+    return s < ramp ? u / ramp : 0.0;
+  }
+};
+
+/// Moves the body surface along the path before every evaluation of the rates.
+class PrescribedRise final : public fluid::FluidEffect<2> {
+ public:
+  PrescribedRise(fluid::Walls<2>* walls, std::size_t surface, fluid::Vec<2> start, double t0, Path path)
+      : walls_(walls), surface_(surface), start_(start), t0_(t0), path_(path) {}
+  const char* name() const override { return "prescribed_rise"; }
+  void addRates(fluid::FluidContext<2>&) override {}
+  void advanceTo(double t, fluid::StepStage) override {
+    fluid::Vec<2> position = start_, velocity = fluid::Vec<2>::Zero();
+    position[1] += path_.rise(t - t0_);
+    velocity[1] = path_.speed(t - t0_);
+    walls_->setSurfaceMotion(surface_, fluid::RigidMotion<2>::translation(position, velocity));
+  }
+
+ private:
+  fluid::Walls<2>* walls_;
+  std::size_t surface_;
+  fluid::Vec<2> start_;
+  double t0_;
+  Path path_;
+};
+
+[[noreturn]] void usage() {
+  std::fprintf(stderr, "usage: moorsph_towed_cylinder DX accel A | speed U RAMP [END_AFTER_START=0.1] [KEY=VALUE...]\n");
+  std::exit(2);
+}
+
+/// One KEY=VALUE method option (see the header comment).
+void applyOption(fluid::TankSpec<2>& spec, const std::string& option) {
+  const auto eq = option.find('=');
+  if (eq == std::string::npos) usage();
+  const std::string key = option.substr(0, eq), value = option.substr(eq + 1);
+  const double v = std::atof(value.c_str());
+  auto& m = spec.fluid.method;
+  if (key == "cs") spec.fluid.sound_speed = v * std::sqrt(2.0 * 9.81 * 0.5);
+  else if (key == "mu") spec.fluid.mu = v;
+  else if (key == "boff") m.boundary_offset = v;
+  else if (key == "h") m.h_factor = v;
+  else if (key == "strength") m.boundary_strength = v;
+  else if (key == "delta") m.density_diffusion_delta = v;
+  else if (key == "xsph") m.xsph_eps = v;
+  else if (key == "effects") {
+    spec.fluid.effects.clear();
+    for (std::size_t b = 0, e; b <= value.size(); b = e + 1) {
+      e = value.find(',', b);
+      if (e == std::string::npos) e = value.size();
+      spec.fluid.effects.push_back(value.substr(b, e - b));
+    }
+  } else usage();
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc < 4) usage();
+  const double dx = std::atof(argv[1]);
+  Path path;
+  const std::string kind = argv[2];
+  int next = 4;
+  if (kind == "accel") {
+    path.a = std::atof(argv[3]);
+  } else if (kind == "speed" && argc >= 5) {
+    path.accelerate = false;
+    path.u = std::atof(argv[3]);
+    path.ramp = std::atof(argv[4]);
+    next = 5;
+  } else {
+    usage();
+  }
+  double window = 0.1;
+  if (argc > next && std::string(argv[next]).find('=') == std::string::npos) window = std::atof(argv[next++]);
+  const double radius = 0.05, hold = 0.3, rho = 1000.0, g = 9.81;
+  const fluid::Vec<2> centre(0.3, 0.2);
+
+  // The water and tank of buildSubmergedBody<2>, the body as a moved wall surface.
+  auto f = cases::buildSubmergedBodyFluid<2>(dx, radius, centre, [&](fluid::TankSpec<2>& spec) {
+    for (int a = next; a < argc; ++a) applyOption(spec, argv[a]);
+  });
+  const std::size_t body = f.body_surface;
+  const fluid::FluidParticles<2>& water = f.water;
+  fluid::FluidSimulation<2> sim(f.scene.setup, f.water, f.scene.boundary);
+  sim.addEffect(std::make_unique<PrescribedRise>(sim.updWalls(), body, centre, hold, path));
+
+  const double volume = cases::displacedVolume<2>(radius);
+  const double added_mass = cases::tankAddedMassCoefficient<2>() * rho * volume;
+  std::printf("# towed cylinder R = %.3f m (%.1f dx), %zu fluid particles, %s, hold %.2f s\n", radius, radius / dx,
+              water.size(), kind == "accel" ? ("accel " + std::string(argv[3])).c_str()
+                                            : ("speed " + std::string(argv[3]) + " ramp " + argv[4]).c_str(),
+              hold);
+  std::printf("# s [ms]  rise [mm]  speed [m/s]  F_y [N/m]  F_pf [N/m]  R = F_pf - F_y [N/m]\n");
+  double next_row = hold - 0.05;  // rows every millisecond from 50 ms before the start
+  while (sim.time() < hold + window - 1e-12) {
+    sim.step();
+    if (sim.time() < next_row - 1e-12) continue;
+    next_row += 0.001;
+    const double s = sim.time() - hold;
+    const double force = sim.walls()->calcSurfaceWrench(body, centre).force[1];
+    const double potential = rho * g * volume - added_mass * path.acceleration(s);
+    std::printf("%8.2f  %9.3f  %11.4f  %9.3f  %10.3f  %10.3f\n", 1000.0 * s, 1000.0 * path.rise(s), path.speed(s),
+                force, potential, potential - force);
+  }
+  return 0;
+}
