@@ -41,7 +41,9 @@ fluid::BoundaryParticles<D> sampleBodySurface(const BodyConfig& body, double spa
   const BodyShapeConfig& s = body.shape;
   const fluid::Vec<D> centre = toEigen(s.centre).template head<D>();
   fluid::BoundaryParticles<D> p;
-  if (s.kind == "sphere" || (s.kind == "cylinder" && D == 2)) {
+  if (s.kind == "sphere" && s.sampling == "rings") {
+    if constexpr (D == 3) p = fluid::sampleSphereRings(centre, s.radius, spacing);  // the reader allows it in 3D only
+  } else if (s.kind == "sphere" || (s.kind == "cylinder" && D == 2)) {
     p = fluid::sampleSphere<D>(centre, s.radius, spacing);
   } else if (s.kind == "box") {
     const fluid::Vec<D> half = 0.5 * toEigen(s.size).template head<D>();

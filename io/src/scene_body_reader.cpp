@@ -30,6 +30,11 @@ void readSphereOrCylinder(MapReader& m, const std::string& kind, BodyShapeConfig
   s.centre = toTriple(m.vector("centre", c.dim, std::vector<double>(c.dim, 0.0)));
   s.radius = m.positive("radius", 0.0, "radius [m]");
   if (s.radius < c.dx * (1.0 - 1e-9)) failSmall(m, "radius", "radius", s.radius, c.dx, c.dx);
+  if (kind == "sphere" && c.dim == 3) {
+    s.sampling = m.text("sampling", "fibonacci");
+    if (s.sampling != "fibonacci" && s.sampling != "rings")
+      m.fail("sampling", "expected fibonacci or rings, got '" + s.sampling + "'");
+  }
   if (kind == "cylinder" && c.dim == 3) {
     s.length = m.positive("length", 0.0, "length along the axis [m]");
     if (s.length < 2.0 * c.dx * (1.0 - 1e-9)) failSmall(m, "length", "length", s.length, 2.0 * c.dx, c.dx);

@@ -34,6 +34,7 @@ void shape(YAML::Emitter& e, const BodyShapeConfig& s, int dim) {
     vec(e, "centre", s.centre, dim);
     if (s.kind == "box") vec(e, "size", s.size, dim);
     else e << YAML::Key << "radius" << YAML::Value << s.radius;
+    if (s.kind == "sphere" && dim == 3) e << YAML::Key << "sampling" << YAML::Value << s.sampling;
     if (s.kind == "cylinder" && dim == 3)
       e << YAML::Key << "length" << YAML::Value << s.length << YAML::Key << "axis" << YAML::Value
         << std::string(1, static_cast<char>('x' + s.axis));

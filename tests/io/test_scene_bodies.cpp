@@ -115,6 +115,35 @@ TEST(SceneBodies, BodySurfaceIsMovableAndWaterStaysOutside) {
   for (const auto& r : built.scene.fluid.r) EXPECT_GE((r - Eigen::Vector3d(0.4, 0.5, 0.4)).norm(), 0.1015 + 0.45 * 0.04);
 }
 
+// `sampling: rings` puts a 3D sphere's particles on mirror-symmetric latitude rings. In
+// a pressure field that depends on height only, p = rho g (y0 - y), the sideways force
+// sum_k p_k n_k dA over a closed surface must vanish (Archimedes: buoyancy is vertical).
+// The rings give it to round-off; the Fibonacci lattice leaves a sideways part of
+// 1e-4 to 2e-3 of the buoyancy (tests/fluid/test_shape_sampling.cpp), which moved a
+// tethered buoy centimetres sideways (docs/validation/tethered-buoy.md).
+TEST(SceneBodies, SphereRingsSamplingHasNoSidewaysHydrostaticForce) {
+  auto sideways = [](const std::vector<std::string>& sets) {
+    const io::SceneConfig c = io::loadSceneText(kBuoy, "s.yaml", sets);
+    const auto built = io::buildScene<3>(c);
+    const auto& b = built.scene.boundary.particles;
+    Eigen::Vector3d force = Eigen::Vector3d::Zero();
+    double count = 0.0;
+    for (std::size_t k = 0; k < b.size(); ++k) {
+      if (b.surface[k] != built.body_surfaces[0]) continue;
+      force += (0.8 - b.r[k][1]) * b.normals[b.normal_begin[k]];  // p / (rho g) n, unit area each
+      count += 1.0;
+    }
+    const double buoyancy = 4.0 * M_PI * 0.1015 * 0.1015 * 0.1015 / 3.0 * count / (4.0 * M_PI * 0.1015 * 0.1015);
+    return std::hypot(force[0], force[2]) / buoyancy;
+  };
+  EXPECT_LT(sideways({"bodies.0.shape.sphere.sampling=rings"}), 1e-12);
+  EXPECT_GT(sideways({}), 1e-5);  // the default Fibonacci lattice: the part rings remove
+  const io::SceneConfig c = io::loadSceneText(kBuoy, "s.yaml", {"bodies.0.shape.sphere.sampling=rings"});
+  EXPECT_EQ(io::loadSceneText(io::resolvedSceneYaml(c), "resolved.yaml").bodies[0].shape.sampling, "rings");
+  const std::string bad = errorOf(kBuoy, {"bodies.0.shape.sphere.sampling=ring"});
+  EXPECT_TRUE(has(bad, "'bodies[0].shape.sphere.sampling': expected fibonacci or rings, got 'ring'")) << bad;
+}
+
 TEST(SceneBodies, RotatedBoxKeepsWaterOutOfItsRotatedVolume) {
   io::SceneConfig c = io::loadSceneText(kBox, "s.yaml", {"bodies.0.orientation_deg=30"});
   const double a = M_PI / 6;

@@ -159,6 +159,9 @@ struct BodyShapeConfig {
   std::string kind;                 ///< "sphere", "box", "cylinder" or "mesh"
   Triple centre{0.0, 0.0, 0.0};     ///< sphere, box, cylinder: centre in the body frame [m]
   double radius = 0.0;              ///< sphere, cylinder [m]
+  /// 3D sphere: "fibonacci" (a Fibonacci lattice) or "rings" (latitude rings, mirror
+  /// symmetric: no sideways hydrostatic force; fluid/shape_sampling.hpp).
+  std::string sampling = "fibonacci";
   Triple size{0.0, 0.0, 0.0};       ///< box: edge lengths [m]
   double length = 0.0;              ///< cylinder (3D) [m]
   int axis = 2;                     ///< cylinder (3D): 0, 1, 2 for x, y, z
