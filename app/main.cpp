@@ -41,7 +41,11 @@ int runDemo(const DemoOptions& o) {
   run.out = o.out;
   run.threads = o.threads;
   run.end = o.end;
-  if (o.dx > 0.0) run.sets.push_back("resolution.dx=" + std::to_string(o.dx));
+  if (o.dx > 0.0) {
+    char dx[32];
+    std::snprintf(dx, sizeof dx, "%.17g", o.dx);  // every digit: std::to_string keeps six decimals
+    run.sets.push_back(std::string("resolution.dx=") + dx);
+  }
   const int code = runScene(run);
   if (code != kSuccess) return code;
   const int plotted = plotRun(o.out);

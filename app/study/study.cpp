@@ -25,9 +25,12 @@ namespace {
 
 namespace fs = std::filesystem;
 
+// 17 significant digits: the value the user gave, to the last bit. With 10 a spacing
+// like 0.016666666666 (1/60, rounded down so that 0.5 m holds 30 spacings) became
+// 0.01666666667, which the water fill counts as 29.99999999 spacings: one layer short.
 std::string num(double x) {
   char text[64];
-  std::snprintf(text, sizeof text, "%.10g", x);
+  std::snprintf(text, sizeof text, "%.17g", x);
   return text;
 }
 

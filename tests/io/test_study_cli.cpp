@@ -156,6 +156,26 @@ TEST(StudyCli, FloatingBoxDraughtFromAGaugeAndTheBodyMeetsArchimedes) {
   }
 }
 
+// A spacing that divides the water only when taken to the last digit (1/60 and 1/30
+// written with 13 digits, rounded down) reaches each run unrounded: the column fills
+// its whole 6 x 12 and 3 x 6 lattice. (Passed on with 10 digits, 1/60 became
+// 0.01666666667 and the 0.2 m column held 11 layers.)
+TEST(StudyCli, SpacingsReachTheRunsToTheLastDigit) {
+  const std::string dir = testing::TempDir() + "moorsph_study_digits";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  const std::string scene = dir + "/scene.yaml";
+  std::ofstream(scene) << kScene;
+  const Result r = run("study " + scene + " --dx 0.0333333333333,0.0166666666666 --metric value_at --time 0.02 " +
+                       "--series gauges/G_col --reference 0.2 --end 0.021 --threads 1 --out " + dir + "/study");
+  ASSERT_EQ(r.code, 0) << r.output;
+  EXPECT_EQ(r.output.find("short of the block"), std::string::npos) << r.output;
+  const auto csv = readCsv(dir + "/study/study.csv");
+  ASSERT_EQ(csv.size(), 3u) << r.output;
+  EXPECT_EQ(std::stod(csv[1][2]), 3.0 * 6.0);
+  EXPECT_EQ(std::stod(csv[2][2]), 6.0 * 12.0);
+}
+
 TEST(StudyCli, BadArgumentsExitOneWithAMessage) {
   const std::string dir = testing::TempDir() + "moorsph_study_bad";
   std::filesystem::create_directories(dir);
