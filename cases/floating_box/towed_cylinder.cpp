@@ -16,7 +16,8 @@
 // as the acceleration, so runs at several U and A tell the forms apart.
 // Method options to find what sets R (each KEY=VALUE): cs (sound speed factor, c_s =
 // F sqrt(2 g 0.5), default 10), mu [Pa s] (0.01), boff (0.5), h (h/dx, 1.2), strength
-// (0.01), delta (density diffusion, 0.1), xsph (eps, 0.5), effects (comma list, default
+// (0.01), delta (density diffusion, 0.1), xsph (eps, 0.5), g [m/s^2] (9.81; c_s stays
+// 10 sqrt(2 x 9.81 x 0.5) unless cs is given), effects (comma list, default
 // pressure,viscosity,xsph,density_diffusion,gravity,walls).
 // Usage: moorsph_towed_cylinder DX accel A | speed U RAMP [END_AFTER_START=0.1] [KEY=VALUE...]
 #include <cmath>
@@ -95,6 +96,7 @@ void applyOption(fluid::TankSpec<2>& spec, const std::string& option) {
   else if (key == "strength") m.boundary_strength = v;
   else if (key == "delta") m.density_diffusion_delta = v;
   else if (key == "xsph") m.xsph_eps = v;
+  else if (key == "g") spec.fluid.gravity[1] = -v;
   else if (key == "effects") {
     spec.fluid.effects.clear();
     for (std::size_t b = 0, e; b <= value.size(); b = e + 1) {
@@ -125,7 +127,7 @@ int main(int argc, char** argv) {
   }
   double window = 0.1;
   if (argc > next && std::string(argv[next]).find('=') == std::string::npos) window = std::atof(argv[next++]);
-  const double radius = 0.05, hold = 0.3, rho = 1000.0, g = 9.81;
+  const double radius = 0.05, hold = 0.3, rho = 1000.0;
   const fluid::Vec<2> centre(0.3, 0.2);
 
   // The water and tank of buildSubmergedBody<2>, the body as a moved wall surface.
@@ -135,6 +137,7 @@ int main(int argc, char** argv) {
   const std::size_t body = f.body_surface;
   const fluid::FluidParticles<2>& water = f.water;
   fluid::FluidSimulation<2> sim(f.scene.setup, f.water, f.scene.boundary);
+  const double g = -f.scene.setup.gravity[1];
   sim.addEffect(std::make_unique<PrescribedRise>(sim.updWalls(), body, centre, hold, path));
 
   const double volume = cases::displacedVolume<2>(radius);
