@@ -10,6 +10,7 @@
 #include <functional>
 #include <memory>
 #include <moorsph/coupling/co_simulation.hpp>
+#include <moorsph/fluid/box_geometry.hpp>
 #include <moorsph/fluid/shape_sampling.hpp>
 #include <moorsph/fluid/tank_scene.hpp>
 
@@ -51,10 +52,12 @@ struct SubmergedBodyFluid {
   std::size_t body_surface = 0;
 };
 
-/// Tank 0.6 m (2D) or 0.3 m (3D) wide, 0.5 m of water; the body at `centre`.
+/// Tank 0.6 m (2D) or 0.3 m (3D) wide, 0.5 m of water; the body at `centre`: a circle
+/// (sphere) of `radius`, or, when `box_half` is not zero, a box of those half-sizes.
 template <int D>
 SubmergedBodyFluid<D> buildSubmergedBodyFluid(double dx, double radius, const fluid::Vec<D>& centre,
-                                              const std::function<void(fluid::TankSpec<D>&)>& adjust = {}) {
+                                              const std::function<void(fluid::TankSpec<D>&)>& adjust = {},
+                                              const fluid::Vec<D>& box_half = fluid::Vec<D>::Zero()) {
   fluid::TankSpec<D> spec;
   const double width = D == 2 ? 0.6 : 0.3;  // 3D: a smaller tank keeps the particle count for this machine
   spec.size = fluid::Vec<D>::Constant(width);
@@ -68,12 +71,20 @@ SubmergedBodyFluid<D> buildSubmergedBodyFluid(double dx, double radius, const fl
   if (adjust) adjust(spec);
   SubmergedBodyFluid<D> out{fluid::buildTankScene<D>(spec), {}, 0};
   const auto& all = out.scene.fluid;
+  const bool box = box_half.norm() > 0.0;
+  auto outside = [&](const fluid::Vec<D>& r) {  // at least dx/2 outside the body
+    if (!box) return (r - centre).norm() >= radius + 0.5 * dx;
+    return ((r - centre).cwiseAbs() - box_half).maxCoeff() >= 0.5 * dx;
+  };
   for (std::size_t i = 0; i < all.size(); ++i)
-    if ((all.r[i] - centre).norm() >= radius + 0.5 * dx) out.water.add(all.r[i], all.v[i], all.rho[i], all.m[i]);
+    if (outside(all.r[i])) out.water.add(all.r[i], all.v[i], all.rho[i], all.m[i]);
   Eigen::Vector3d origin = Eigen::Vector3d::Zero();
   origin.head<D>() = centre;
-  out.body_surface = out.scene.boundary.addSurface(fluid::sampleSphere<D>(centre, radius, dx),
-                                                   fluid::SurfaceInfo{"body", true, true, origin});
+  out.body_surface = out.scene.boundary.addSurface(
+      box ? fluid::sampleBoxSurface<D>(centre - box_half, centre + box_half, dx, fluid::allFaces<D>(),
+                                       fluid::NormalSide::Outward)
+          : fluid::sampleSphere<D>(centre, radius, dx),
+      fluid::SurfaceInfo{"body", true, true, origin});
   return out;
 }
 

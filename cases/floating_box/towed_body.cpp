@@ -14,12 +14,16 @@
 // R = F_pf - F (positive: the water holds the body back more than potential flow does).
 // A drag grows as U^2, a viscous history force as U sqrt(s), an added-mass error
 // as the acceleration, so runs at several U and A tell the forms apart.
+// With plate=L the body is instead a flat plate L long and 0.02 m thick (a box, same
+// centre) moved along x, its length: the water slides along its two faces. Potential flow
+// gives it no force at constant speed (and a negligible added mass along its length), so
+// R = -F_x sign(U); plates of two lengths separate the faces' share from the ends'.
 // Method options to find what sets R (each KEY=VALUE): cs (sound speed factor, c_s =
 // F sqrt(2 g 0.5), default 10), mu [Pa s] (0.01), boff (0.5), h (h/dx, 1.2), strength
 // (0.01), delta (density diffusion, 0.1), xsph (eps, 0.5), g [m/s^2] (9.81; c_s stays
 // 10 sqrt(2 x 9.81 x 0.5) unless cs is given), effects (comma list, default
-// pressure,viscosity,xsph,density_diffusion,gravity,walls).
-// Usage: moorsph_towed_cylinder DX accel A | speed U RAMP [END_AFTER_START=0.1] [KEY=VALUE...]
+// pressure,viscosity,xsph,density_diffusion,gravity,walls), plate [m] (see above).
+// Usage: moorsph_towed_body DX accel A | speed U RAMP [END_AFTER_START=0.1] [KEY=VALUE...]
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -55,17 +59,18 @@ struct Path {
   }
 };
 
-/// Moves the body surface along the path before every evaluation of the rates.
-class PrescribedRise final : public fluid::FluidEffect<2> {
+/// Moves the body surface along the path (along axis 0 = x or 1 = y) before every
+/// evaluation of the rates.
+class PrescribedMotion final : public fluid::FluidEffect<2> {
  public:
-  PrescribedRise(fluid::Walls<2>* walls, std::size_t surface, fluid::Vec<2> start, double t0, Path path)
-      : walls_(walls), surface_(surface), start_(start), t0_(t0), path_(path) {}
-  const char* name() const override { return "prescribed_rise"; }
+  PrescribedMotion(fluid::Walls<2>* walls, std::size_t surface, fluid::Vec<2> start, double t0, Path path, int axis)
+      : walls_(walls), surface_(surface), start_(start), t0_(t0), path_(path), axis_(axis) {}
+  const char* name() const override { return "prescribed_motion"; }
   void addRates(fluid::FluidContext<2>&) override {}
   void advanceTo(double t, fluid::StepStage) override {
     fluid::Vec<2> position = start_, velocity = fluid::Vec<2>::Zero();
-    position[1] += path_.rise(t - t0_);
-    velocity[1] = path_.speed(t - t0_);
+    position[axis_] += path_.rise(t - t0_);
+    velocity[axis_] = path_.speed(t - t0_);
     walls_->setSurfaceMotion(surface_, fluid::RigidMotion<2>::translation(position, velocity));
   }
 
@@ -75,15 +80,16 @@ class PrescribedRise final : public fluid::FluidEffect<2> {
   fluid::Vec<2> start_;
   double t0_;
   Path path_;
+  int axis_;
 };
 
 [[noreturn]] void usage() {
-  std::fprintf(stderr, "usage: moorsph_towed_cylinder DX accel A | speed U RAMP [END_AFTER_START=0.1] [KEY=VALUE...]\n");
+  std::fprintf(stderr, "usage: moorsph_towed_body DX accel A | speed U RAMP [END_AFTER_START=0.1] [KEY=VALUE...]\n");
   std::exit(2);
 }
 
-/// One KEY=VALUE method option (see the header comment).
-void applyOption(fluid::TankSpec<2>& spec, const std::string& option) {
+/// One KEY=VALUE option (see the header comment); plate sets `plate`, the rest `spec`.
+void applyOption(fluid::TankSpec<2>& spec, double& plate, const std::string& option) {
   const auto eq = option.find('=');
   if (eq == std::string::npos) usage();
   const std::string key = option.substr(0, eq), value = option.substr(eq + 1);
@@ -97,6 +103,7 @@ void applyOption(fluid::TankSpec<2>& spec, const std::string& option) {
   else if (key == "delta") m.density_diffusion_delta = v;
   else if (key == "xsph") m.xsph_eps = v;
   else if (key == "g") spec.fluid.gravity[1] = -v;
+  else if (key == "plate") plate = v;
   else if (key == "effects") {
     spec.fluid.effects.clear();
     for (std::size_t b = 0, e; b <= value.size(); b = e + 1) {
@@ -131,30 +138,41 @@ int main(int argc, char** argv) {
   const fluid::Vec<2> centre(0.3, 0.2);
 
   // The water and tank of buildSubmergedBody<2>, the body as a moved wall surface.
-  auto f = cases::buildSubmergedBodyFluid<2>(dx, radius, centre, [&](fluid::TankSpec<2>& spec) {
-    for (int a = next; a < argc; ++a) applyOption(spec, argv[a]);
-  });
+  double plate = 0.0;
+  fluid::TankSpec<2> options;  // parsed once first: the plate's size is needed before the build
+  for (int a = next; a < argc; ++a) applyOption(options, plate, argv[a]);
+  auto f = cases::buildSubmergedBodyFluid<2>(
+      dx, radius, centre,
+      [&](fluid::TankSpec<2>& spec) {
+        for (int a = next; a < argc; ++a) applyOption(spec, plate, argv[a]);
+      },
+      fluid::Vec<2>(0.5 * plate, plate > 0.0 ? 0.01 : 0.0));
+  const int axis = plate > 0.0 ? 0 : 1;
   const std::size_t body = f.body_surface;
-  const fluid::FluidParticles<2>& water = f.water;
   fluid::FluidSimulation<2> sim(f.scene.setup, f.water, f.scene.boundary);
   const double g = -f.scene.setup.gravity[1];
-  sim.addEffect(std::make_unique<PrescribedRise>(sim.updWalls(), body, centre, hold, path));
+  sim.addEffect(std::make_unique<PrescribedMotion>(sim.updWalls(), body, centre, hold, path, axis));
 
   const double volume = cases::displacedVolume<2>(radius);
   const double added_mass = cases::tankAddedMassCoefficient<2>() * rho * volume;
-  std::printf("# towed cylinder R = %.3f m (%.1f dx), %zu fluid particles, %s, hold %.2f s\n", radius, radius / dx,
-              water.size(), kind == "accel" ? ("accel " + std::string(argv[3])).c_str()
-                                            : ("speed " + std::string(argv[3]) + " ramp " + argv[4]).c_str(),
-              hold);
-  std::printf("# s [ms]  rise [mm]  speed [m/s]  F_y [N/m]  F_pf [N/m]  R = F_pf - F_y [N/m]\n");
+  const std::string motion = kind == "accel" ? "accel " + std::string(argv[3])
+                                             : "speed " + std::string(argv[3]) + " ramp " + argv[4];
+  if (plate > 0.0)
+    std::printf("# towed plate %.3f x 0.02 m along x, %zu fluid particles, %s, hold %.2f s\n", plate, f.water.size(),
+                motion.c_str(), hold);
+  else
+    std::printf("# towed cylinder R = %.3f m (%.1f dx), %zu fluid particles, %s, hold %.2f s\n", radius, radius / dx,
+                f.water.size(), motion.c_str(), hold);
+  std::printf("# s [ms]  travel [mm]  speed [m/s]  F [N/m]  F_pf [N/m]  R = F_pf - F [N/m]   (F along the motion's axis)\n");
   double next_row = hold - 0.05;  // rows every millisecond from 50 ms before the start
   while (sim.time() < hold + window - 1e-12) {
     sim.step();
     if (sim.time() < next_row - 1e-12) continue;
     next_row += 0.001;
     const double s = sim.time() - hold;
-    const double force = sim.walls()->calcSurfaceWrench(body, centre).force[1];
-    const double potential = rho * g * volume - added_mass * path.acceleration(s);
+    const double force = sim.walls()->calcSurfaceWrench(body, centre).force[axis];
+    // Potential flow: buoyancy and added mass for the rising cylinder; nothing along a plate.
+    const double potential = plate > 0.0 ? 0.0 : rho * g * volume - added_mass * path.acceleration(s);
     std::printf("%8.2f  %9.3f  %11.4f  %9.3f  %10.3f  %10.3f\n", 1000.0 * s, 1000.0 * path.rise(s), path.speed(s),
                 force, potential, potential - force);
   }
