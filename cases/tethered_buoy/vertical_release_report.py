@@ -38,11 +38,11 @@ def still_level(run):
     return dx, count, (count * dx ** 3 + 2.0 / 3.0 * np.pi * RADIUS ** 3) / area
 
 
-def turning_points(t, y):
-    """Indices of the local maxima and minima of y (plateaus count once)."""
+def maxima(y):
+    """Indices of the local maxima of y (a plateau counts once)."""
     dy = np.sign(np.diff(y))
     turns = np.flatnonzero(dy[1:] != dy[:-1]) + 1
-    return [i for i in turns if dy[i - 1] > 0], [i for i in turns if dy[i - 1] < 0]
+    return [i for i in turns if dy[i - 1] > 0]
 
 
 def main():
@@ -61,8 +61,7 @@ def main():
         first = np.argmax(np.where(t <= 1.0, y, -np.inf))
         after = (t > t[first]) & (t <= t[first] + 0.5)
         trough = np.flatnonzero(after)[np.argmin(y[after])] if after.any() else None
-        maxima, _ = turning_points(t, y)
-        later = [i for i in maxima if t[i] > t[first] + 0.2]
+        later = [i for i in maxima(y) if t[i] > t[first] + 0.2]
         period = "%.3f" % (t[later[0]] - t[first]) if later else "-"
         text = "%+.1f (%.3f)" % (1000 * y[trough], t[trough]) if trough is not None else "-"
         print("%s  %.5f  %d  %.4f  %+.1f (%.3f)  %s  %s  %+.1f" % (
