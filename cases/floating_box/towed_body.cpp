@@ -22,13 +22,18 @@
 // F sqrt(2 g 0.5), default 10), mu [Pa s] (0.01), boff (0.5), h (h/dx, 1.2), strength
 // (0.01), delta (density diffusion, 0.1), xsph (eps, 0.5), g [m/s^2] (9.81; c_s stays
 // 10 sqrt(2 x 9.81 x 0.5) unless cs is given), effects (comma list, default
-// pressure,viscosity,xsph,density_diffusion,gravity,walls), plate [m] (see above).
+// pressure,viscosity,xsph,density_diffusion,gravity,walls), plate [m] (see above),
+// sectors N (cylinder only: also print the force from each of N angular sectors of the
+// surface, sector 0 centred on the direction of +axis, counter-clockwise, and the mean
+// pressure of the fluid within 1.5 dx of the surface in each).
 // Usage: moorsph_towed_body DX accel A | speed U RAMP [END_AFTER_START=0.1] [KEY=VALUE...]
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <memory>
 #include <string>
+#include <vector>
 #include <moorsph/cases/submerged_body.hpp>
 #include <moorsph/fluid/fluid_simulation.hpp>
 
@@ -83,13 +88,45 @@ class PrescribedMotion final : public fluid::FluidEffect<2> {
   int axis_;
 };
 
+/// Sector j of n equal angular sectors about `centre` in which the point r lies, sector
+/// j centred 360 j/n degrees from the +axis direction, counter-clockwise.
+std::size_t sectorOf(const fluid::Vec<2>& r, const fluid::Vec<2>& centre, int axis, int n) {
+  constexpr double two_pi = 6.283185307179586;
+  const fluid::Vec<2> d = r - centre;
+  const double along = d[axis], across = axis == 1 ? -d[0] : d[1];  // across: 90 deg counter-clockwise
+  double turn = std::atan2(across, along) / two_pi + 0.5 / n;
+  turn -= std::floor(turn);
+  return std::min(static_cast<std::size_t>(turn * n), static_cast<std::size_t>(n - 1));
+}
+
+/// Where on the surface the force comes from: per sector, the force along `axis` on the
+/// body's particles in it, then the mean pressure of the fluid particles within `reach`
+/// of the surface (a cylinder of `radius`) in it.
+std::vector<double> sectorLoads(const fluid::FluidSimulation<2>& sim, std::size_t body, const fluid::Vec<2>& centre,
+                                double radius, double reach, int axis, int n) {
+  std::vector<double> out(2 * static_cast<std::size_t>(n), 0.0), count(static_cast<std::size_t>(n), 0.0);
+  const auto& b = sim.walls()->particles();
+  const auto [first, last] = sim.walls()->surfaceRange(body);
+  for (std::size_t k = first; k < last; ++k) out[sectorOf(b.r[k], centre, axis, n)] += b.reaction[k][axis];
+  const auto& f = sim.fluid();
+  for (std::size_t i = 0; i < f.size(); ++i) {
+    if ((f.r[i] - centre).norm() > radius + reach) continue;
+    const std::size_t j = sectorOf(f.r[i], centre, axis, n);
+    out[static_cast<std::size_t>(n) + j] += f.p[i];
+    count[j] += 1.0;
+  }
+  for (int j = 0; j < n; ++j) out[static_cast<std::size_t>(n + j)] /= std::max(1.0, count[static_cast<std::size_t>(j)]);
+  return out;
+}
+
 [[noreturn]] void usage() {
   std::fprintf(stderr, "usage: moorsph_towed_body DX accel A | speed U RAMP [END_AFTER_START=0.1] [KEY=VALUE...]\n");
   std::exit(2);
 }
 
-/// One KEY=VALUE option (see the header comment); plate sets `plate`, the rest `spec`.
-void applyOption(fluid::TankSpec<2>& spec, double& plate, const std::string& option) {
+/// One KEY=VALUE option (see the header comment); plate and sectors set their own
+/// variables, the rest `spec`.
+void applyOption(fluid::TankSpec<2>& spec, double& plate, int& sectors, const std::string& option) {
   const auto eq = option.find('=');
   if (eq == std::string::npos) usage();
   const std::string key = option.substr(0, eq), value = option.substr(eq + 1);
@@ -104,6 +141,7 @@ void applyOption(fluid::TankSpec<2>& spec, double& plate, const std::string& opt
   else if (key == "xsph") m.xsph_eps = v;
   else if (key == "g") spec.fluid.gravity[1] = -v;
   else if (key == "plate") plate = v;
+  else if (key == "sectors") sectors = static_cast<int>(v);
   else if (key == "effects") {
     spec.fluid.effects.clear();
     for (std::size_t b = 0, e; b <= value.size(); b = e + 1) {
@@ -139,12 +177,13 @@ int main(int argc, char** argv) {
 
   // The water and tank of buildSubmergedBody<2>, the body as a moved wall surface.
   double plate = 0.0;
+  int sectors = 0;
   fluid::TankSpec<2> options;  // parsed once first: the plate's size is needed before the build
-  for (int a = next; a < argc; ++a) applyOption(options, plate, argv[a]);
+  for (int a = next; a < argc; ++a) applyOption(options, plate, sectors, argv[a]);
   auto f = cases::buildSubmergedBodyFluid<2>(
       dx, radius, centre,
       [&](fluid::TankSpec<2>& spec) {
-        for (int a = next; a < argc; ++a) applyOption(spec, plate, argv[a]);
+        for (int a = next; a < argc; ++a) applyOption(spec, plate, sectors, argv[a]);
       },
       fluid::Vec<2>(0.5 * plate, plate > 0.0 ? 0.01 : 0.0));
   const int axis = plate > 0.0 ? 0 : 1;
@@ -163,7 +202,8 @@ int main(int argc, char** argv) {
   else
     std::printf("# towed cylinder R = %.3f m (%.1f dx), %zu fluid particles, %s, hold %.2f s\n", radius, radius / dx,
                 f.water.size(), motion.c_str(), hold);
-  std::printf("# s [ms]  travel [mm]  speed [m/s]  F [N/m]  F_pf [N/m]  R = F_pf - F [N/m]   (F along the motion's axis)\n");
+  std::printf("# s [ms]  travel [mm]  speed [m/s]  F [N/m]  F_pf [N/m]  R = F_pf - F [N/m]   (F along the motion's axis)%s\n",
+              sectors > 0 ? "  then F of each sector, then the mean pressure [Pa] of the fluid within 1.5 dx of the surface in each (sectors=N)" : "");
   double next_row = hold - 0.05;  // rows every millisecond from 50 ms before the start
   while (sim.time() < hold + window - 1e-12) {
     sim.step();
@@ -173,8 +213,14 @@ int main(int argc, char** argv) {
     const double force = sim.walls()->calcSurfaceWrench(body, centre).force[axis];
     // Potential flow: buoyancy and added mass for the rising cylinder; nothing along a plate.
     const double potential = plate > 0.0 ? 0.0 : rho * g * volume - added_mass * path.acceleration(s);
-    std::printf("%8.2f  %9.3f  %11.4f  %9.3f  %10.3f  %10.3f\n", 1000.0 * s, 1000.0 * path.rise(s), path.speed(s),
+    std::printf("%8.2f  %9.3f  %11.4f  %9.3f  %10.3f  %10.3f", 1000.0 * s, 1000.0 * path.rise(s), path.speed(s),
                 force, potential, potential - force);
+    if (sectors > 0) {
+      fluid::Vec<2> now = centre;
+      now[axis] += path.rise(s);
+      for (const double part : sectorLoads(sim, body, now, radius, 1.5 * dx, axis, sectors)) std::printf("  %9.3f", part);
+    }
+    std::printf("\n");
   }
   return 0;
 }
