@@ -25,7 +25,9 @@
 // pressure,viscosity,xsph,density_diffusion,gravity,walls), plate [m] (see above),
 // sectors N (cylinder only: also print the force from each of N angular sectors of the
 // surface, sector 0 centred on the direction of +axis, counter-clockwise, and the mean
-// pressure of the fluid within 1.5 dx of the surface in each).
+// pressure of the fluid within 1.5 dx of the surface in each), dump S (at S ms after the
+// start, print the fluid particles within 3 R of the centre as '# dump' lines and the
+// body's particles as '# wall' lines).
 // Usage: moorsph_towed_body DX accel A | speed U RAMP [END_AFTER_START=0.1] [KEY=VALUE...]
 #include <algorithm>
 #include <cmath>
@@ -119,14 +121,36 @@ std::vector<double> sectorLoads(const fluid::FluidSimulation<2>& sim, std::size_
   return out;
 }
 
+/// The fluid particles within `reach` of `centre` as '# dump' comment lines on stdout
+/// (x, y relative to the centre [m], vx, vy [m/s], rho [kg/m^3], p [Pa]), then the body's
+/// particles as '# wall' lines (x, y relative to the centre, normal).
+void dumpNearBody(const fluid::FluidSimulation<2>& sim, std::size_t body, const fluid::Vec<2>& centre, double reach,
+                  double s) {
+  const auto& f = sim.fluid();
+  std::printf("# dump at s = %.4f s: x y (from the body centre) vx vy rho p\n", s);
+  for (std::size_t i = 0; i < f.size(); ++i) {
+    const fluid::Vec<2> d = f.r[i] - centre;
+    if (d.norm() > reach) continue;
+    std::printf("# dump %.6f %.6f %.5f %.5f %.4f %.2f\n", d[0], d[1], f.v[i][0], f.v[i][1], f.rho[i], f.p[i]);
+  }
+  // The body's boundary particles: x y (from the centre) and the normal, for force budgets.
+  const auto& b = sim.walls()->particles();
+  const auto [first, last] = sim.walls()->surfaceRange(body);
+  for (std::size_t k = first; k < last; ++k) {
+    const fluid::Vec<2> d = b.r[k] - centre;
+    const fluid::Vec<2>& n = b.normals[b.normal_begin[k]];
+    std::printf("# wall %.6f %.6f %.6f %.6f\n", d[0], d[1], n[0], n[1]);
+  }
+}
+
 [[noreturn]] void usage() {
   std::fprintf(stderr, "usage: moorsph_towed_body DX accel A | speed U RAMP [END_AFTER_START=0.1] [KEY=VALUE...]\n");
   std::exit(2);
 }
 
-/// One KEY=VALUE option (see the header comment); plate and sectors set their own
-/// variables, the rest `spec`.
-void applyOption(fluid::TankSpec<2>& spec, double& plate, int& sectors, const std::string& option) {
+/// One KEY=VALUE option (see the header comment); plate, sectors and dump set their
+/// own variables, the rest `spec`.
+void applyOption(fluid::TankSpec<2>& spec, double& plate, int& sectors, double& dump_ms, const std::string& option) {
   const auto eq = option.find('=');
   if (eq == std::string::npos) usage();
   const std::string key = option.substr(0, eq), value = option.substr(eq + 1);
@@ -142,6 +166,7 @@ void applyOption(fluid::TankSpec<2>& spec, double& plate, int& sectors, const st
   else if (key == "g") spec.fluid.gravity[1] = -v;
   else if (key == "plate") plate = v;
   else if (key == "sectors") sectors = static_cast<int>(v);
+  else if (key == "dump") dump_ms = v;
   else if (key == "effects") {
     spec.fluid.effects.clear();
     for (std::size_t b = 0, e; b <= value.size(); b = e + 1) {
@@ -178,12 +203,13 @@ int main(int argc, char** argv) {
   // The water and tank of buildSubmergedBody<2>, the body as a moved wall surface.
   double plate = 0.0;
   int sectors = 0;
+  double dump_ms = -1.0;
   fluid::TankSpec<2> options;  // parsed once first: the plate's size is needed before the build
-  for (int a = next; a < argc; ++a) applyOption(options, plate, sectors, argv[a]);
+  for (int a = next; a < argc; ++a) applyOption(options, plate, sectors, dump_ms, argv[a]);
   auto f = cases::buildSubmergedBodyFluid<2>(
       dx, radius, centre,
       [&](fluid::TankSpec<2>& spec) {
-        for (int a = next; a < argc; ++a) applyOption(spec, plate, sectors, argv[a]);
+        for (int a = next; a < argc; ++a) applyOption(spec, plate, sectors, dump_ms, argv[a]);
       },
       fluid::Vec<2>(0.5 * plate, plate > 0.0 ? 0.01 : 0.0));
   const int axis = plate > 0.0 ? 0 : 1;
@@ -221,6 +247,12 @@ int main(int argc, char** argv) {
       for (const double part : sectorLoads(sim, body, now, radius, 1.5 * dx, axis, sectors)) std::printf("  %9.3f", part);
     }
     std::printf("\n");
+    if (dump_ms >= 0.0 && 1000.0 * s >= dump_ms - 1e-9) {
+      fluid::Vec<2> now = centre;
+      now[axis] += path.rise(s);
+      dumpNearBody(sim, body, now, 3.0 * radius, s);
+      dump_ms = -1.0;
+    }
   }
   return 0;
 }
