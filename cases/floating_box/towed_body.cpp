@@ -20,7 +20,8 @@
 // R = -F_x sign(U); plates of two lengths separate the faces' share from the ends'.
 // Method options to find what sets R (each KEY=VALUE): cs (sound speed factor, c_s =
 // F sqrt(2 g 0.5), default 10), mu [Pa s] (0.01), boff (0.5), h (h/dx, 1.2), strength
-// (0.01), delta (density diffusion, 0.1), xsph (eps, 0.5), g [m/s^2] (9.81; c_s stays
+// (0.01), delta (density diffusion, 0.1), xsph (eps, 0.5), xsph_form (reference or
+// monaghan), g [m/s^2] (9.81; c_s stays
 // 10 sqrt(2 x 9.81 x 0.5) unless cs is given), effects (comma list, default
 // pressure,viscosity,xsph,density_diffusion,gravity,walls), plate [m] (see above),
 // sectors N (cylinder only: also print the force from each of N angular sectors of the
@@ -163,6 +164,9 @@ void applyOption(fluid::TankSpec<2>& spec, double& plate, int& sectors, double& 
   else if (key == "strength") m.boundary_strength = v;
   else if (key == "delta") m.density_diffusion_delta = v;
   else if (key == "xsph") m.xsph_eps = v;
+  else if (key == "xsph_form") {
+    if (!fluid::optionFromName(fluid::kXsphFormNames, value, m.xsph_form)) usage();
+  }
   else if (key == "g") spec.fluid.gravity[1] = -v;
   else if (key == "plate") plate = v;
   else if (key == "sectors") sectors = static_cast<int>(v);
