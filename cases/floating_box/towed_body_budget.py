@@ -18,8 +18,13 @@ particles farther than 2.4 R from the centre are skipped.
 --down: the body was moving down (the front is the bottom). The defaults are the program's.
 """
 import argparse
+import os
+import sys
 
 import numpy as np
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from near_body_flow import wall_shape, wendland_gradient_2d  # noqa: E402  (same kernel and wall law)
 
 G = 9.81
 RHO0 = 1000.0
@@ -27,20 +32,8 @@ RHO0 = 1000.0
 
 def wendland_gradient(rij, h):
     """grad_i W_ij of the 2D Wendland C2 kernel for rows rij = r_i - r_j."""
-    alpha = 7.0 / (64.0 * np.pi * h * h)
-    q = np.linalg.norm(rij, axis=1) / h
-    t = np.clip(2.0 - q, 0.0, None)
-    return (-10.0 * alpha / (h * h) * t**3)[:, None] * rij
-
-
-def wall_shape(q):
-    """S(q) of METHOD.md section 2."""
-    out = np.zeros_like(q)
-    near = (q > 0) & (q < 0.8)
-    out[near] = (0.8 / q[near]) ** 8
-    far = (q >= 0.8) & (q < 1.0)
-    out[far] = 25.0 * (q[far] - 1.0) ** 2
-    return out
+    r = np.linalg.norm(rij, axis=1)
+    return (wendland_gradient_2d(r, h) / r)[:, None] * rij
 
 
 def read_dump(path):
