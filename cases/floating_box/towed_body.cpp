@@ -217,6 +217,10 @@ int main(int argc, char** argv) {
       },
       fluid::Vec<2>(0.5 * plate, plate > 0.0 ? 0.01 : 0.0));
   const int axis = plate > 0.0 ? 0 : 1;
+  if (plate > 0.0 && (sectors > 0 || dump_ms >= 0.0)) {
+    std::fprintf(stderr, "moorsph_towed_body: sectors and dump measure round the cylinder; not with plate\n");
+    return 2;
+  }
   const std::size_t body = f.body_surface;
   fluid::FluidSimulation<2> sim(f.scene.setup, f.water, f.scene.boundary);
   const double g = -f.scene.setup.gravity[1];
