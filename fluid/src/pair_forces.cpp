@@ -1,5 +1,8 @@
 #include <moorsph/fluid/pair_forces.hpp>
 
+#include <omp.h>
+
+#include <algorithm>
 #include <stdexcept>
 #include <type_traits>
 #include <vector>
@@ -29,6 +32,7 @@ class PairForcesImpl final : public PairForces<D> {
     Vec<D> v;
     double rho, p_over_rho2, inv_rho;
     Vec<D> grad_rho;  ///< kRenormalised only
+    double m = 0.0, volume = 0.0;  ///< the symmetric loop only: i's share given to j
   };
   /// The kernel's constants for the pair loops: grad_i W_ij = grad_scale (2 - q)^3 r_ij.
   struct KernelConstants {
@@ -94,7 +98,12 @@ class PairForcesImpl final : public PairForces<D> {
     }
     if constexpr (kMirror) imageStates(ctx);
     if constexpr (kRenormalised) densityGradients(ctx);
-    interactions_ = sumPairs(ctx);
+    // Mirror images are seen from their owner only, so with mirror planes every particle
+    // sums its own list; otherwise each pair is evaluated once for both particles.
+    if constexpr (kMirror)
+      interactions_ = sumPairs(ctx);
+    else
+      interactions_ = sumPairsOnce(ctx);
   }
 
  private:
@@ -257,6 +266,106 @@ class PairForcesImpl final : public PairForces<D> {
     return true;
   }
 
+  /// Adds the pair (i, j) to both particles' sums: each term is symmetric or
+  /// antisymmetric in i and j (grad_j W_ji = -grad_i W_ij, the jumps change sign), so
+  /// j's share is i's with the masses and volumes swapped. False if j is out of reach.
+  bool addPairBothWays(Sums& si, Sums& sj, const Owner& i, const Neighbour& nb, const KernelConstants& k) const {
+    const Vec<D>& rij = nb.rij;
+    const double r2 = rij.squaredNorm();
+    if (r2 >= k.support2) return false;
+    const double q = std::sqrt(r2) * k.inv_h;
+    const double t = 2.0 - q;
+    const double t3 = t * t * t;
+    const double F = k.grad_scale * t3;  // grad_i W_ij = F r_ij = -grad_j W_ji
+    const Vec<D> vij = i.v - nb.v;
+    const double vr_F = vij.dot(rij) * F;  // (v_i - v_j) . grad_i W_ij, the same seen from j
+    si.drho += nb.m * vr_F;
+    sj.drho += i.m * vr_F;
+    double coef = i.p_over_rho2 + nb.p_over_rho2;
+    if constexpr (kViscosity) coef -= viscosity_.xi_mu_eff * vij.dot(rij) * i.inv_rho * nb.inv_rho / (r2 + viscosity_.beta2);
+    const Vec<D> push = (coef * F) * rij;
+    si.acc -= nb.m * push;
+    sj.acc += i.m * push;
+    if constexpr (kXsph) {
+      const double w = k.alpha * t3 * t * (1.0 + 2.0 * q);  // W_ij
+      si.xsph += (w * nb.volume) * nb.v;
+      si.xsph_weight += w * nb.volume;
+      sj.xsph += (w * i.volume) * i.v;
+      sj.xsph_weight += w * i.volume;
+    }
+    if constexpr (kDiffusion) {
+      double jump = i.rho - nb.rho;  // j sees -jump
+      if constexpr (kRenormalised) jump -= 0.5 * (i.grad_rho + nb.grad_rho).dot(rij);
+      else jump -= diffusion_.hydrostatic.dot(rij);
+      const double flux = diffusion_.coefficient * jump * F * r2 / (r2 + diffusion_.eta2);
+      si.drho += flux * nb.volume;
+      sj.drho -= flux * i.volume;
+    }
+    return true;
+  }
+
+  /// Each listed pair once (j > i), added to both particles. Every thread accumulates in
+  /// its own array of sums (a pair's j may be another thread's owner); the arrays are
+  /// added up per particle afterwards. Half the kernel and term evaluations of sumPairs.
+  std::uint64_t sumPairsOnce(FluidContext<D>& ctx) {
+    FluidParticles<D>& f = ctx.fluid;
+    const NeighbourList& list = ctx.neighbours.fluidFluid();
+    const Domain<D> domain = ctx.setup.domain;
+    const WendlandKernel<D> kernel = ctx.kernel;
+    const KernelConstants k(kernel);
+    const std::size_t n = f.size();
+    const int threads = omp_get_max_threads();
+    if (static_cast<int>(thread_sums_.size()) < threads) thread_sums_.resize(threads);
+    std::uint64_t interactions = 0;
+#pragma omp parallel
+    {
+      std::vector<Sums>& sums = thread_sums_[omp_get_thread_num()];
+      sums.assign(n, Sums{});
+#pragma omp for schedule(static) reduction(+ : interactions)
+      for (std::size_t i = 0; i < n; ++i) {
+        Owner owner{f.v[i], f.rho[i], p_over_rho2_[i], inv_rho_[i],
+                    kRenormalised ? grad_rho_[i] : Vec<D>(Vec<D>::Zero()), f.m[i], volume_[i]};
+        for (std::uint64_t s = list.begin[i]; s < list.begin[i + 1]; ++s) {
+          const std::uint32_t j = list.index[s];
+          if (j <= i) continue;  // (j, i) is summed from j's list
+          Vec<D> rij = f.r[i] - f.r[j];
+          if constexpr (Periodic) rij = domain.minimumImage(rij);
+          if (addPairBothWays(sums[i], sums[j], owner, particle(f, j, rij), k)) interactions += 2;
+        }
+      }
+#pragma omp for schedule(static)
+      for (std::size_t i = 0; i < n; ++i) {
+        Sums total = thread_sums_[0][i];
+        for (int t = 1; t < omp_get_num_threads(); ++t) {
+          const Sums& other = thread_sums_[t][i];
+          total.acc += other.acc;
+          total.xsph += other.xsph;
+          total.xsph_weight += other.xsph_weight;
+          total.drho += other.drho;
+        }
+        storeRates(f, kernel, i, total);
+      }
+    }
+    return interactions;
+  }
+
+  /// Writes particle i's rates from its completed sums.
+  void storeRates(FluidParticles<D>& f, const WendlandKernel<D>& kernel, std::size_t i, const Sums& sums) const {
+    const Vec<D> vi = f.v[i];
+    f.dvdt[i] = sums.acc;
+    f.drhodt[i] = sums.drho;
+    if constexpr (kXsph) {
+      if (xsph_.form == XsphForm::Reference) {
+        const double self = kernel.valueAtZero() * volume_[i];  // the sum includes j = i
+        f.drdt[i] = (1.0 - xsph_.eps) * vi + xsph_.eps * (sums.xsph + self * vi);
+      } else {
+        f.drdt[i] = vi + xsph_.eps * (sums.xsph - sums.xsph_weight * vi);
+      }
+    } else {
+      f.drdt[i] = vi;
+    }
+  }
+
   std::uint64_t sumPairs(FluidContext<D>& ctx) const {
     FluidParticles<D>& f = ctx.fluid;
     const NeighbourList& list = ctx.neighbours.fluidFluid();
@@ -274,18 +383,7 @@ class PairForcesImpl final : public PairForces<D> {
       Sums sums;
       interactions += forEachNeighbour(f, list, domain, i,
                                        [&](const Neighbour& nb) { return addPair(sums, owner, nb, k); });
-      f.dvdt[i] = sums.acc;
-      f.drhodt[i] = sums.drho;
-      if constexpr (kXsph) {
-        if (xsph_.form == XsphForm::Reference) {
-          const double self = kernel.valueAtZero() * volume_[i];  // the sum includes j = i
-          f.drdt[i] = (1.0 - xsph_.eps) * vi + xsph_.eps * (sums.xsph + self * vi);
-        } else {
-          f.drdt[i] = vi + xsph_.eps * (sums.xsph - sums.xsph_weight * vi);
-        }
-      } else {
-        f.drdt[i] = vi;
-      }
+      storeRates(f, kernel, i, sums);
     }
     return interactions;
   }
@@ -296,6 +394,7 @@ class PairForcesImpl final : public PairForces<D> {
   Mirror mirror_;
   std::uint64_t interactions_ = 0;
   std::vector<double> p_over_rho2_, inv_rho_, volume_;
+  std::vector<std::vector<Sums>> thread_sums_;  ///< sumPairsOnce: one array per thread
   std::vector<Vec<D>> grad_rho_;  ///< renormalised density gradients (kRenormalised only)
   std::vector<double> image_rho_, image_p_over_rho2_, image_inv_rho_, image_volume_;  ///< kMirror only
 };
