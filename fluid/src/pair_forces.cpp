@@ -325,28 +325,31 @@ class PairForcesImpl final : public PairForces<D> {
       for (std::size_t i = 0; i < n; ++i) {
         Owner owner{f.v[i], f.rho[i], p_over_rho2_[i], inv_rho_[i],
                     kRenormalised ? grad_rho_[i] : Vec<D>(Vec<D>::Zero()), f.m[i], volume_[i]};
+        Sums own;  // i's sums in registers: sums[i] might alias sums[j] as far as the compiler knows
         for (std::uint64_t s = list.begin[i]; s < list.begin[i + 1]; ++s) {
           const std::uint32_t j = list.index[s];
           if (j <= i) continue;  // (j, i) is summed from j's list
           Vec<D> rij = f.r[i] - f.r[j];
           if constexpr (Periodic) rij = domain.minimumImage(rij);
-          if (addPairBothWays(sums[i], sums[j], owner, particle(f, j, rij), k)) interactions += 2;
+          if (addPairBothWays(own, sums[j], owner, particle(f, j, rij), k)) interactions += 2;
         }
+        add(sums[i], own);
       }
 #pragma omp for schedule(static)
       for (std::size_t i = 0; i < n; ++i) {
         Sums total = thread_sums_[0][i];
-        for (int t = 1; t < omp_get_num_threads(); ++t) {
-          const Sums& other = thread_sums_[t][i];
-          total.acc += other.acc;
-          total.xsph += other.xsph;
-          total.xsph_weight += other.xsph_weight;
-          total.drho += other.drho;
-        }
+        for (int t = 1; t < omp_get_num_threads(); ++t) add(total, thread_sums_[t][i]);
         storeRates(f, kernel, i, total);
       }
     }
     return interactions;
+  }
+
+  static void add(Sums& to, const Sums& from) {
+    to.acc += from.acc;
+    to.xsph += from.xsph;
+    to.xsph_weight += from.xsph_weight;
+    to.drho += from.drho;
   }
 
   /// Writes particle i's rates from its completed sums.
