@@ -237,39 +237,12 @@ class PairForcesImpl final : public PairForces<D> {
     }
   }
 
-  /// Adds neighbour nb's share of particle i's rates; false if nb is out of reach.
-  bool addPair(Sums& sums, const Owner& i, const Neighbour& nb, const KernelConstants& k) const {
-    const Vec<D>& rij = nb.rij;
-    const double r2 = rij.squaredNorm();
-    if (r2 >= k.support2) return false;
-    const double q = std::sqrt(r2) * k.inv_h;
-    const double t = 2.0 - q;
-    const double t3 = t * t * t;
-    const double F = k.grad_scale * t3;  // grad_i W_ij = F r_ij
-    const Vec<D> vij = i.v - nb.v;
-    const double vr = vij.dot(rij);
-    sums.drho += nb.m * vr * F;
-    double coef = i.p_over_rho2 + nb.p_over_rho2;
-    if constexpr (kViscosity) coef -= viscosity_.xi_mu_eff * vr * i.inv_rho * nb.inv_rho / (r2 + viscosity_.beta2);
-    sums.acc -= (nb.m * coef * F) * rij;
-    if constexpr (kXsph) {
-      const double w = k.alpha * t3 * t * (1.0 + 2.0 * q) * nb.volume;
-      sums.xsph += w * nb.v;
-      sums.xsph_weight += w;
-    }
-    if constexpr (kDiffusion) {
-      double jump = i.rho - nb.rho;
-      if constexpr (kRenormalised) jump -= 0.5 * (i.grad_rho + nb.grad_rho).dot(rij);
-      else jump -= diffusion_.hydrostatic.dot(rij);
-      sums.drho += diffusion_.coefficient * jump * F * r2 / (r2 + diffusion_.eta2) * nb.volume;
-    }
-    return true;
-  }
-
-  /// Adds the pair (i, j) to both particles' sums: each term is symmetric or
-  /// antisymmetric in i and j (grad_j W_ji = -grad_i W_ij, the jumps change sign), so
-  /// j's share is i's with the masses and volumes swapped. False if j is out of reach.
-  bool addPairBothWays(Sums& si, Sums& sj, const Owner& i, const Neighbour& nb, const KernelConstants& k) const {
+  /// Adds the pair (i, nb) to i's sums and, with kBoth, to j's (*sj): each term is
+  /// symmetric or antisymmetric in i and j (grad_j W_ji = -grad_i W_ij, the jumps change
+  /// sign), so j's share is i's with the masses and volumes swapped. False if nb is out
+  /// of reach.
+  template <bool kBoth>
+  bool addPair(Sums& si, Sums* sj, const Owner& i, const Neighbour& nb, const KernelConstants& k) const {
     const Vec<D>& rij = nb.rij;
     const double r2 = rij.squaredNorm();
     if (r2 >= k.support2) return false;
@@ -278,20 +251,24 @@ class PairForcesImpl final : public PairForces<D> {
     const double t3 = t * t * t;
     const double F = k.grad_scale * t3;  // grad_i W_ij = F r_ij = -grad_j W_ji
     const Vec<D> vij = i.v - nb.v;
-    const double vr_F = vij.dot(rij) * F;  // (v_i - v_j) . grad_i W_ij, the same seen from j
-    si.drho += nb.m * vr_F;
-    sj.drho += i.m * vr_F;
+    const double vr = vij.dot(rij);  // the same seen from j
+    si.drho += nb.m * vr * F;
     double coef = i.p_over_rho2 + nb.p_over_rho2;
-    if constexpr (kViscosity) coef -= viscosity_.xi_mu_eff * vij.dot(rij) * i.inv_rho * nb.inv_rho / (r2 + viscosity_.beta2);
+    if constexpr (kViscosity) coef -= viscosity_.xi_mu_eff * vr * i.inv_rho * nb.inv_rho / (r2 + viscosity_.beta2);
     const Vec<D> push = (coef * F) * rij;
     si.acc -= nb.m * push;
-    sj.acc += i.m * push;
+    if constexpr (kBoth) {
+      sj->drho += i.m * vr * F;
+      sj->acc += i.m * push;
+    }
     if constexpr (kXsph) {
       const double w = k.alpha * t3 * t * (1.0 + 2.0 * q);  // W_ij
       si.xsph += (w * nb.volume) * nb.v;
       si.xsph_weight += w * nb.volume;
-      sj.xsph += (w * i.volume) * i.v;
-      sj.xsph_weight += w * i.volume;
+      if constexpr (kBoth) {
+        sj->xsph += (w * i.volume) * i.v;
+        sj->xsph_weight += w * i.volume;
+      }
     }
     if constexpr (kDiffusion) {
       double jump = i.rho - nb.rho;  // j sees -jump
@@ -299,7 +276,7 @@ class PairForcesImpl final : public PairForces<D> {
       else jump -= diffusion_.hydrostatic.dot(rij);
       const double flux = diffusion_.coefficient * jump * F * r2 / (r2 + diffusion_.eta2);
       si.drho += flux * nb.volume;
-      sj.drho -= flux * i.volume;
+      if constexpr (kBoth) sj->drho -= flux * i.volume;
     }
     return true;
   }
@@ -331,7 +308,7 @@ class PairForcesImpl final : public PairForces<D> {
           if (j <= i) continue;  // (j, i) is summed from j's list
           Vec<D> rij = f.r[i] - f.r[j];
           if constexpr (Periodic) rij = domain.minimumImage(rij);
-          if (addPairBothWays(own, sums[j], owner, particle(f, j, rij), k)) interactions += 2;
+          if (addPair<true>(own, &sums[j], owner, particle(f, j, rij), k)) interactions += 2;
         }
         add(sums[i], own);
       }
@@ -385,7 +362,7 @@ class PairForcesImpl final : public PairForces<D> {
                         kRenormalised ? grad_rho_[i] : Vec<D>(Vec<D>::Zero())};
       Sums sums;
       interactions += forEachNeighbour(f, list, domain, i,
-                                       [&](const Neighbour& nb) { return addPair(sums, owner, nb, k); });
+                                       [&](const Neighbour& nb) { return addPair<false>(sums, nullptr, owner, nb, k); });
       storeRates(f, kernel, i, sums);
     }
     return interactions;
