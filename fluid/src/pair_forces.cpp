@@ -2,7 +2,6 @@
 
 #include <omp.h>
 
-#include <algorithm>
 #include <stdexcept>
 #include <type_traits>
 #include <vector>
