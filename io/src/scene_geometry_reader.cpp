@@ -220,6 +220,10 @@ void readGeometry(MapReader& top, SceneConfig& c) {
       MapReader m(one.child("water"), item_path + ".water", src);
       WaterConfig w;
       w.box = readExtent(m, c, c.dx, "water block");
+      w.packed = m.boolean("packed", w.packed);
+      w.packing_iterations = m.integer("packing_iterations", w.packing_iterations);
+      if (w.packing_iterations < 1) m.fail("packing_iterations", "expected a positive number of iterations");
+      if (m.has("packing_iterations") && !w.packed) m.fail("packing_iterations", "set 'packed: true' as well, or drop the key");
       w.where.text = src.locate(item, item_path);
       m.finish();
       bool contained = c.tanks.empty();

@@ -87,6 +87,10 @@ std::string resolvedSceneYaml(const SceneConfig& c) {
   for (const auto& w : c.water) {
     e << YAML::BeginMap << YAML::Key << "water" << YAML::Value << YAML::BeginMap;
     extent(e, w.box, c.dim);
+    if (w.packed) {
+      e << YAML::Key << "packed" << YAML::Value << true;
+      e << YAML::Key << "packing_iterations" << YAML::Value << w.packing_iterations;
+    }
     e << YAML::EndMap << YAML::EndMap;
   }
   for (const auto& b : c.boxes) {

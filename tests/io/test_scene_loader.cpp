@@ -153,6 +153,15 @@ TEST(SceneLoader, OutOfRangeValues) {
   EXPECT_NE(probe.find("'pressure_probes[0].point': the point is 0.1 m from the surface 'tank'"), std::string::npos)
       << probe;
 
+  std::string unpacked = kBase;
+  unpacked.replace(unpacked.find("[0.1, 0.2]}"), 11, "[0.1, 0.2], packing_iterations: 10}");
+  EXPECT_NE(errorOf(unpacked).find("'geometry[1].water.packing_iterations': set 'packed: true' as well"), std::string::npos)
+      << errorOf(unpacked);
+  std::string no_iterations = kBase;
+  no_iterations.replace(no_iterations.find("[0.1, 0.2]}"), 11, "[0.1, 0.2], packed: true, packing_iterations: 0}");
+  EXPECT_NE(errorOf(no_iterations).find("expected a positive number of iterations"), std::string::npos)
+      << errorOf(no_iterations);
+
   std::string outside = kBase;
   outside.replace(outside.find("[0.1, 0.2]"), 10, "[0.5, 0.2]");
   EXPECT_NE(errorOf(outside).find("must lie inside a tank"), std::string::npos) << errorOf(outside);

@@ -79,6 +79,11 @@ struct CircleConfig {
 /// A block of water on the fluid lattice.
 struct WaterConfig {
   BoxExtent box;
+  /// Packed start (fluid/lattice_packing.hpp): the block's lattice relaxed into an even,
+  /// disordered arrangement before the run, so a 3D column does not pack down as the
+  /// lattice breaks up. Off: the simple cubic lattice.
+  bool packed = false;
+  int packing_iterations = 400;
   SourceLocation where;
 };
 
