@@ -8,16 +8,17 @@
 #include <cstdio>
 #include <cstdlib>
 #include <vector>
+#include <moorsph/cases/command_line.hpp>
 #include <moorsph/cases/floating_box.hpp>
 #include <moorsph/coupling/co_simulation.hpp>
 
 int main(int argc, char** argv) {
   using namespace moorsph;
-  const double dx = argc > 1 ? std::atof(argv[1]) : 0.01;
-  const double end = argc > 2 ? std::atof(argv[2]) : 1.4;
+  const double dx = argc > 1 ? moorsph::cases::numberArgument(argv[1], "DX", "moorsph_light_body_sweep") : 0.01;
+  const double end = argc > 2 ? moorsph::cases::numberArgument(argv[2], "END", "moorsph_light_body_sweep") : 1.4;
   std::vector<double> ratios{0.05, 0.1, 0.2, 0.3, 0.5, 0.8};
   if (argc > 3) ratios.clear();
-  for (int a = 3; a < argc; ++a) ratios.push_back(std::atof(argv[a]));
+  for (int a = 3; a < argc; ++a) ratios.push_back(moorsph::cases::numberArgument(argv[a], "density ratio", "moorsph_light_body_sweep"));
   std::printf("# dx = %.4f m, mu = 0.01 Pa s, release at 0.2 s, end %.2f s\n", dx, end);
   std::printf("# ratio  stable  draught_err_%%  max_speed_m/s  steps  wall_s\n");
   for (double ratio : ratios) {

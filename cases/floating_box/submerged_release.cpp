@@ -17,6 +17,7 @@
 #include <cstdlib>
 #include <string>
 #include <vector>
+#include <moorsph/cases/command_line.hpp>
 #include <moorsph/cases/submerged_body.hpp>
 
 namespace {
@@ -56,10 +57,10 @@ int main(int argc, char** argv) {
   int arg = 1;
   const bool three_d = argc > 1 && std::string(argv[1]) == "--3d";
   if (three_d) ++arg;
-  const double dx = argc > arg ? std::atof(argv[arg]) : 0.01;
+  const double dx = argc > arg ? moorsph::cases::numberArgument(argv[arg], "DX", "moorsph_submerged_release") : 0.01;
   std::vector<double> ratios{0.1, 0.2, 0.5, 0.8};
   if (argc > arg + 1) ratios.clear();
-  for (int a = arg + 1; a < argc; ++a) ratios.push_back(std::atof(argv[a]));
+  for (int a = arg + 1; a < argc; ++a) ratios.push_back(moorsph::cases::numberArgument(argv[a], "density ratio", "moorsph_submerged_release"));
   if (three_d) sweep<3>(dx, ratios);
   else sweep<2>(dx, ratios);
 }

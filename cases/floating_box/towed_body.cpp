@@ -37,6 +37,7 @@
 #include <memory>
 #include <string>
 #include <vector>
+#include <moorsph/cases/command_line.hpp>
 #include <moorsph/cases/submerged_body.hpp>
 #include <moorsph/fluid/fluid_simulation.hpp>
 
@@ -149,13 +150,18 @@ void dumpNearBody(const fluid::FluidSimulation<2>& sim, std::size_t body, const 
   std::exit(2);
 }
 
+double parseNumber(const std::string& text, const std::string& what) {
+  return cases::numberArgument(text, what, "moorsph_towed_body");
+}
+
 /// One KEY=VALUE option (see the header comment); plate, sectors and dump set their
 /// own variables, the rest `spec`.
 void applyOption(fluid::TankSpec<2>& spec, double& plate, int& sectors, double& dump_ms, const std::string& option) {
   const auto eq = option.find('=');
   if (eq == std::string::npos) usage();
   const std::string key = option.substr(0, eq), value = option.substr(eq + 1);
-  const double v = std::atof(value.c_str());
+  const bool text_value = key == "xsph_form" || key == "effects";
+  const double v = text_value ? 0.0 : parseNumber(value, key);
   auto& m = spec.fluid.method;
   if (key == "cs") spec.fluid.sound_speed = v * std::sqrt(2.0 * 9.81 * 0.5);
   else if (key == "mu") spec.fluid.mu = v;
@@ -169,7 +175,7 @@ void applyOption(fluid::TankSpec<2>& spec, double& plate, int& sectors, double& 
   }
   else if (key == "g") spec.fluid.gravity[1] = -v;
   else if (key == "plate") plate = v;
-  else if (key == "sectors") sectors = static_cast<int>(v);
+  else if (key == "sectors") sectors = cases::countArgument(value, key, "moorsph_towed_body", 1);
   else if (key == "dump") dump_ms = v;
   else if (key == "effects") {
     spec.fluid.effects.clear();
@@ -185,22 +191,22 @@ void applyOption(fluid::TankSpec<2>& spec, double& plate, int& sectors, double& 
 
 int main(int argc, char** argv) {
   if (argc < 4) usage();
-  const double dx = std::atof(argv[1]);
+  const double dx = parseNumber(argv[1], "DX");
   Path path;
   const std::string kind = argv[2];
   int next = 4;
   if (kind == "accel") {
-    path.a = std::atof(argv[3]);
+    path.a = parseNumber(argv[3], "A");
   } else if (kind == "speed" && argc >= 5) {
     path.accelerate = false;
-    path.u = std::atof(argv[3]);
-    path.ramp = std::atof(argv[4]);
+    path.u = parseNumber(argv[3], "U");
+    path.ramp = parseNumber(argv[4], "RAMP");
     next = 5;
   } else {
     usage();
   }
   double window = 0.1;
-  if (argc > next && std::string(argv[next]).find('=') == std::string::npos) window = std::atof(argv[next++]);
+  if (argc > next && std::string(argv[next]).find('=') == std::string::npos) window = parseNumber(argv[next++], "END_AFTER_START");
   const double radius = 0.05, hold = 0.3, rho = 1000.0;
   const fluid::Vec<2> centre(0.3, 0.2);
 

@@ -34,6 +34,7 @@
 #include <memory>
 #include <string>
 #include <vector>
+#include <moorsph/cases/command_line.hpp>
 #include <moorsph/fluid/fluid_simulation.hpp>
 #include <moorsph/fluid/wave_gauge.hpp>
 #include <moorsph/fluid/shape_sampling.hpp>
@@ -57,7 +58,7 @@ Options parse(int argc, char** argv) {
   bool tank_given = false, depth_given = false;
   for (int a = 1; a + 1 < argc; a += 2) {
     const std::string key = argv[a];
-    const double v = std::atof(argv[a + 1]);
+    const double v = moorsph::cases::numberArgument(argv[a + 1], key, "moorsph_sphere_offset");
     if (key == "--dx") o.dx = v;
     else if (key == "--boundary-spacing") o.boundary_spacing = v;
     else if (key == "--b-off") o.b_off = v;

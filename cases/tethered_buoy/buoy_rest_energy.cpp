@@ -27,6 +27,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <vector>
+#include <moorsph/cases/command_line.hpp>
 #include <moorsph/cases/tethered_buoy.hpp>
 
 namespace {
@@ -34,7 +35,7 @@ namespace {
 using namespace moorsph;
 
 
-double argOr(int argc, char** argv, int i, double fallback) { return argc > i ? std::atof(argv[i]) : fallback; }
+double argOr(int argc, char** argv, int i, double fallback) { return argc > i ? moorsph::cases::numberArgument(argv[i], "argument " + std::to_string(i), "moorsph_buoy_rest_energy") : fallback; }
 
 Eigen::Vector3d toEigen(const fluid::Vec<3>& v) { return {v[0], v[1], v[2]}; }
 

@@ -12,6 +12,7 @@
 #include <cstdlib>
 #include <string>
 #include <vector>
+#include <moorsph/cases/command_line.hpp>
 #include <moorsph/cases/tethered_buoy.hpp>
 
 namespace {
@@ -39,7 +40,8 @@ Options parse(int argc, char** argv) {
     const std::string key = argv[a];
     if (a + 1 >= argc) usage("missing value after " + key);
     const std::string value = argv[a + 1];
-    const double v = std::atof(value.c_str());
+    const bool text_value = key == "--release" || key == "--model" || key == "--csv";
+    const double v = text_value ? 0.0 : cases::numberArgument(value, key, "moorsph_tethered_buoy");
     if (key == "--release") {
       if (value == "vertical") o.tank.release = cases::BuoyRelease::Vertical;
       else if (value == "horizontal") o.tank.release = cases::BuoyRelease::Horizontal;
