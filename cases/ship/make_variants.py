@@ -25,7 +25,7 @@ def deepen(text, dd):
     d = 132 + dd
     text = replace(text, "upper: [720, 210, 72]", f"upper: [720, {210 + dd + (20 if dd == 28 else 0)}, 72]")
     text = replace(text, "upper: [720, 172, 72]", f"upper: [720, {172 + dd + (20 if dd == 28 else 0)}, 72]")
-    text = replace(text, "upper: [700, 132, 72]}   # d = 132 m", f"upper: [700, {d}, 72]}}   # d = {d} m")
+    text = replace(text, "upper: [700, 132, 72], packed: true}   # d = 132 m", f"upper: [700, {d}, 72], packed: true}}   # d = {d} m")
     text = replace(text, "top: 157                      # [m]: 25 m above the still level",
                    f"top: {157 + dd + (15 if dd == 28 else 0)}                      # [m]: {25 + (15 if dd == 28 else 0)} m above the still level")
     text = replace(text, "position: [177.9, 119.3117, 36.0]", f"position: [177.9, {119.3117 + dd:.4f}, 36.0]")
