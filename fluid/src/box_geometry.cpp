@@ -72,9 +72,7 @@ void fillBox(FluidParticles<D>& fluid, const Vec<D>& lower, const Vec<D>& upper,
       r[k] = lower[k] + (static_cast<double>(rest % n[k]) + 0.5) * dx;
       rest /= n[k];
     }
-    const double depth = std::max(0.0, surface_height - r[1]);
-    const double rho = gravity != 0.0 ? eos.density(eos.rho0() * gravity * depth) : eos.rho0();
-    fluid.add(r, Vec<D>::Zero(), rho, mass);
+    fluid.add(r, Vec<D>::Zero(), hydrostaticDensity(eos, gravity, surface_height, r[1]), mass);
   }
 }
 

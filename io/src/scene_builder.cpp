@@ -69,10 +69,7 @@ void packWaterBlock(const WaterConfig& w, std::size_t index, const SceneConfig& 
   spec.iterations = w.packing_iterations;
   spec.seed = 1 + index;
   const fluid::PackingReport r = fluid::packBlock<D>(block, lower, upper, setup.domain, c.dx, setup.h(), spec);
-  for (std::size_t i = 0; i < block.size(); ++i) {
-    const double depth = std::max(0.0, w.box.upper[1] - block.r[i][1]);
-    block.rho[i] = g != 0.0 ? eos.density(eos.rho0() * g * depth) : eos.rho0();
-  }
+  for (std::size_t i = 0; i < block.size(); ++i) block.rho[i] = fluid::hydrostaticDensity(eos, g, w.box.upper[1], block.r[i][1]);
   char text[320];
   std::snprintf(text, sizeof text,
                 "water block %zu packed (%d iterations): kernel sum dx^%d sum W %.4f +- %.4f on the lattice, %.4f +- "

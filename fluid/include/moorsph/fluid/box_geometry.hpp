@@ -1,6 +1,7 @@
 #pragma once
 // Geometry builders for boxes: a box tank's walls, a box obstacle's surface, and a
 // block of fluid particles on a lattice.
+#include <algorithm>
 #include <array>
 #include <vector>
 #include <moorsph/fluid/boundary_particles.hpp>
@@ -63,6 +64,13 @@ enum class NormalSide { Inward, Outward };
 template <int D>
 BoundaryParticles<D> sampleBoxSurface(const Vec<D>& lower, const Vec<D>& upper, double spacing,
                                       const BoxFaces<D>& faces, NormalSide side);
+
+/// The density at height y under a free surface at `surface_height` in still water:
+/// hydrostatic through the equation of state, rho0 above the surface or without gravity.
+inline double hydrostaticDensity(const TaitEos& eos, double gravity, double surface_height, double y) {
+  const double depth = std::max(0.0, surface_height - y);
+  return gravity != 0.0 ? eos.density(eos.rho0() * gravity * depth) : eos.rho0();
+}
 
 /// Fluid particles filling [lower, upper] on a lattice of spacing dx, each a half
 /// spacing inside the faces, mass rho0 dx^D. With `gravity` non-zero the density is
