@@ -38,7 +38,7 @@ class Packer {
  public:
   Packer(FluidParticles<D>& block, const Vec<D>& lower, const Vec<D>& upper, const Domain<D>& domain, double dx,
          double h)
-      : f_(block), lower_(lower), upper_(upper), domain_(domain), dx_(dx), kernel_(h),
+      : f_(block), domain_(domain), dx_(dx), kernel_(h),
         volume_(std::pow(dx, D)), planes_(packingMirrors<D>(lower, upper, domain)),
         search_(domain, 2.0 * h, 0.5 * dx) {}
 
@@ -110,7 +110,7 @@ class Packer {
   // The image of r across every plane in `mask` (bit k: planes_[k]).
   Vec<D> reflected(Vec<D> r, unsigned mask) const {
     for (std::size_t k = 0; k < planes_.size(); ++k)
-      if (mask & (1u << k)) r[planes_[k].axis] = 2.0 * planes_[k].position - r[planes_[k].axis];
+      if (mask & (1u << k)) r[planes_[k].axis] = planes_[k].mirrored(r[planes_[k].axis]);
     return r;
   }
 
@@ -147,12 +147,11 @@ class Packer {
 
   Vec<D> keptInside(Vec<D> r) const {
     for (const MirrorPlane& p : planes_)
-      if (p.inside * (r[p.axis] - p.position) < 0.0) r[p.axis] = 2.0 * p.position - r[p.axis];
+      if (p.outside(r[p.axis])) r[p.axis] = p.mirrored(r[p.axis]);
     return domain_.wrap(r);
   }
 
   FluidParticles<D>& f_;
-  Vec<D> lower_, upper_;
   Domain<D> domain_;
   double dx_;
   WendlandKernel<D> kernel_;

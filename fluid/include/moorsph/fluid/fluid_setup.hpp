@@ -15,6 +15,11 @@ struct MirrorPlane {
   int axis = 1;
   double position = 0.0;
   int inside = 1;
+
+  /// True where coordinate x (along `axis`) lies on the dry side of the plane.
+  bool outside(double x) const { return inside * (x - position) < 0.0; }
+  /// The mirror image of coordinate x across the plane.
+  double mirrored(double x) const { return 2.0 * position - x; }
 };
 
 template <int D>

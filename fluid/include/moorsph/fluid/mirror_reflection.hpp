@@ -37,8 +37,8 @@ class MirrorReflection final : public FluidEffect<D>, public Counted<MirrorRefle
     for (std::size_t i = 0; i < n; ++i) {
       for (const MirrorPlane& p : planes_) {
         const int a = p.axis;
-        if (p.inside * (f.r[i][a] - p.position) >= 0.0) continue;
-        f.r[i][a] = 2.0 * p.position - f.r[i][a];
+        if (!p.outside(f.r[i][a])) continue;
+        f.r[i][a] = p.mirrored(f.r[i][a]);
         f.v[i][a] = -f.v[i][a];
       }
     }
