@@ -221,7 +221,11 @@ BuiltScene<D> buildScene(const SceneConfig& c) {
   std::vector<double> mesh_tiles;         // per surface: sqrt(area per particle) of meshes [m]
   MeshExclusion near_mesh;
   for (const auto& t : c.tanks) {
-    const fluid::BoxFaces<D> faces = fluid::tankFaces<D>(t.lid, t.mirror_floor, t.mirror_sides);
+    fluid::BoxFaces<D> faces = fluid::tankFaces<D>(t.lid, t.mirror_floor, t.mirror_sides);
+    // A tank spanning a periodic axis has no faces normal to it: the wrap closes the water
+    // there, and a face would put a wall across the seam.
+    for (int a = 0; a < D; ++a)
+      if (c.spansPeriod(t.box, a)) faces[2 * a] = faces[2 * a + 1] = false;
     if (t.mirror_floor) scene.setup.mirror_floor_height = t.box.lower[1];  // its plane replaces the -y face
     if (t.mirror_sides) scene.setup.mirror_walls = fluid::sideMirrorPlanes<D>(toVec<D>(t.box.lower), toVec<D>(t.box.upper));
     scene.boundary.addSurface(withoutPeriodicImages<D>(fluid::sampleBoxSurface<D>(toVec<D>(t.box.lower), toVec<D>(t.box.upper),

@@ -258,7 +258,7 @@ void readGeometry(MapReader& top, SceneConfig& c) {
   }
   if (c.water.empty()) top.fail("geometry", "the scene has no water block (add '- water: {lower: [...], upper: [...]}')");
   const bool has_walls = std::find(c.effects.begin(), c.effects.end(), "walls") != c.effects.end();
-  const bool tank_particles = std::any_of(c.tanks.begin(), c.tanks.end(), [](const TankConfig& t) { return !t.allMirrors(); });
+  const bool tank_particles = std::any_of(c.tanks.begin(), c.tanks.end(), [&](const TankConfig& t) { return c.hasWallParticles(t); });
   const bool surfaces = tank_particles || !c.boxes.empty() || !c.meshes.empty() || !c.circles.empty();
   if (!has_walls && surfaces) top.fail("effects", "the scene has tanks, boxes or meshes but 'walls' is not in its effects");
 }

@@ -135,12 +135,12 @@ void readDomain(MapReader& top, SceneConfig& c) {
 /// 'walls' listed where nothing has wall particles (a tank closed by mirror images
 /// alone, no box, mesh, piston or body) would stop the run at its start.
 void checkWallParticles(MapReader& top, const SceneConfig& c) {
-  const bool tank_particles = std::any_of(c.tanks.begin(), c.tanks.end(), [](const TankConfig& t) { return !t.allMirrors(); });
+  const bool tank_particles = std::any_of(c.tanks.begin(), c.tanks.end(), [&](const TankConfig& t) { return c.hasWallParticles(t); });
   const bool surfaces = tank_particles || !c.boxes.empty() || !c.meshes.empty() || !c.circles.empty() ||
                         !c.bodies.empty() || c.hasEffect("piston");
   if (c.hasEffect("walls") && !surfaces && !c.tanks.empty())
-    top.fail("effects", "'walls' is listed but the tank is all mirror images (floor: mirror, sides: mirror, no lid) "
-                        "and nothing else has wall particles: leave 'walls' out");
+    top.fail("effects", "'walls' is listed but the tank is all mirror images and periodic seams (floor: mirror, "
+                        "sides: mirror or spanning a periodic axis, no lid) and nothing else has wall particles: leave 'walls' out");
 }
 
 /// A tank key that makes mirror images (`key: mirror`) and its effect go together, for
@@ -258,6 +258,18 @@ int SceneConfig::bodyIndex(const std::string& body) const {
 }
 
 bool SceneConfig::hasEffect(const std::string& e) const { return std::find(effects.begin(), effects.end(), e) != effects.end(); }
+
+bool SceneConfig::spansPeriod(const BoxExtent& box, int axis) const {
+  const double period = domain.upper[axis] - domain.lower[axis];
+  return periodic[axis] && box.upper[axis] - box.lower[axis] >= period - 1e-9 * period;
+}
+
+bool SceneConfig::hasWallParticles(const TankConfig& t) const {
+  if (t.lid || !t.mirror_floor) return true;
+  for (int a = 0; a < dim; ++a)
+    if (a != 1 && !t.mirror_sides && !spansPeriod(t.box, a)) return true;
+  return false;
+}
 
 double SceneConfig::gravityMagnitude() const {
   return std::sqrt(gravity[0] * gravity[0] + gravity[1] * gravity[1] + gravity[2] * gravity[2]);

@@ -622,3 +622,34 @@ geometry:
     EXPECT_EQ(static_cast<long>(r.size()), columns * std::lround(0.72 / step)) << "dx " << dx;
   }
 }
+
+// A tank spanning a periodic axis has no faces normal to it (no wall across the seam):
+// periodic in z, a tank with wall sides keeps its x faces and floor only; periodic in x
+// and z with a mirror floor it has no particles at all and needs no 'walls'.
+TEST(SceneLoader, TankSpanningThePeriodHasNoWallAtTheSeam) {
+  const char* text = R"(dim: 3
+end_time: 0.1
+resolution: {dx: 0.04}
+effects: [pressure, gravity, walls]
+domain: {lower: [0, -0.2, 0], upper: [0.8, 0.6, 0.72], periodic: [false, false, true]}
+geometry:
+  - tank: {lower: [0, 0, 0], upper: [0.8, 0.4, 0.72]}
+  - water: {lower: [0, 0, 0], upper: [0.8, 0.2, 0.72]}
+)";
+  const auto built = io::buildScene<3>(io::loadSceneText(text, "s.yaml"));
+  const auto& r = built.scene.boundary.particles.r;
+  ASSERT_GT(r.size(), 0u);
+  for (const auto& p : r) {
+    const bool on_floor = std::abs(p[1]) < 1e-9, on_end = std::abs(p[0]) < 1e-9 || std::abs(p[0] - 0.8) < 1e-9;
+    EXPECT_TRUE(on_floor || on_end) << "a particle off the floor and the x faces at " << p.transpose();
+  }
+  std::string mirrored = text;
+  mirrored.replace(mirrored.find("gravity, walls]"), 15, "gravity, mirror_floor]");
+  mirrored.replace(mirrored.find("false, false, true]"), 19, "true, false, true]");
+  mirrored.replace(mirrored.find("0.72]}\n  - water"), 6, "0.72], floor: mirror}");
+  const auto open = io::buildScene<3>(io::loadSceneText(mirrored, "s.yaml"));
+  EXPECT_EQ(open.scene.boundary.particles.size(), 0u);
+  std::string idle = mirrored;
+  idle.replace(idle.find("gravity, mirror_floor]"), 22, "gravity, walls, mirror_floor]");
+  EXPECT_NE(errorOf(idle).find("leave 'walls' out"), std::string::npos) << errorOf(idle);
+}

@@ -36,8 +36,6 @@ struct TankConfig {
   /// sides: mirror: no side-wall particles (faces normal to x, and z in 3D); the
   /// "mirror_walls" effect's images close them.
   bool mirror_sides = false;
-  /// True when mirror images close every face it has: it then has no wall particles.
-  bool allMirrors() const { return mirror_floor && mirror_sides && !lid; }
   bool track_reaction = false;  ///< set when a pressure probe sits on it
   SourceLocation where;
 };
@@ -295,6 +293,11 @@ struct SceneConfig {
   /// The CFL time step the fluid will take at most [s].
   double cflDt() const;
   bool hasEffect(const std::string& e) const;
+  /// True when `box` spans the domain's period along `axis` (a periodic axis).
+  bool spansPeriod(const BoxExtent& box, int axis) const;
+  /// True when tank `t` has wall particles: a face that is neither a mirror plane nor
+  /// dropped because the tank spans a periodic axis normal to it.
+  bool hasWallParticles(const TankConfig& t) const;
   /// Index of the named body, or -1.
   int bodyIndex(const std::string& name) const;
 };
