@@ -19,7 +19,7 @@ import h5py  # noqa: E402
 import numpy as np  # noqa: E402
 
 GROUPS = {
-    "gauges": ["G150"],
+    "gauges": ["G150", "G200_side"],  # G200_side: at the focus (not in the tiny scenes)
     "points_ship": ["com_y", "bow_y", "stern_y", "com_x", "com_z"],
     "body_ship": ["roll", "pitch", "yaw"],
     "line_fore": ["fairlead_tension", "slack"],
@@ -48,7 +48,7 @@ def stitch(runs):
                 keep = t < next_start if next_start is not None else np.ones_like(t, bool)
                 out[g]["time"].append(t[keep])
                 for c in cols:
-                    out[g][c].append(f[g][c][:][keep])
+                    out[g][c].append(f[g][c][:][keep] if c in f[g] else np.full(keep.sum(), np.nan))
     return {g: {c: np.concatenate(v) if v else np.array([]) for c, v in cols.items()} for g, cols in out.items()}
 
 

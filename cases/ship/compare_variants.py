@@ -1,0 +1,126 @@
+#!/usr/bin/env python3
+"""Compare ship runs (the base and its design variants) over one time window.
+
+    python3 compare_variants.py T0 T1 OUT.png NAME=RUN_DIR[,RUN_DIR...] [NAME=...]
+
+Each NAME names one variant; its RUN_DIRs are the segments of that run in order (a run
+continued from a checkpoint), stitched as plot_ship_run.py does. Prints a Markdown table
+of what issue 7 asks to compare (cable peaks and slack spells, heave, pitch, deck-end
+heights, fluid force, green water, hull-pressure peaks) over T0 <= t <= T1, one column
+per variant, and writes one PNG overlaying the variants' time series.
+"""
+import os
+import sys
+
+import numpy as np
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from plot_ship_run import stitch  # noqa: E402
+
+LINES = ["line_fore", "line_aft_port", "line_aft_starboard"]
+DESIGN_COM_Y = 132.48  # [m]: the CoM height at the design pose (ship_base.yaml, docs/validation/ship.md)
+
+
+def window(series, t0, t1):
+    """The stitched series cut to t0 <= t <= t1."""
+    out = {}
+    for g, cols in series.items():
+        t = cols["time"]
+        keep = (t >= t0) & (t <= t1)
+        out[g] = {c: v[keep] for c, v in cols.items()}
+    return out
+
+
+def slack_spells(time, slack):
+    """[(start, end)] of the intervals where `slack` is set."""
+    spells, start = [], None
+    for t, s in zip(time, slack > 0.5):
+        if s and start is None:
+            start = t
+        if not s and start is not None:
+            spells.append((start, t))
+            start = None
+    if start is not None:
+        spells.append((start, time[-1]))
+    return spells
+
+
+def rows(s):
+    """{row label: text} for one variant's windowed series."""
+    r = {}
+    for line in LINES:
+        L = s[line]
+        k = np.argmax(L["fairlead_tension"])
+        spells = slack_spells(L["time"], L["slack"])
+        r[f"{line[5:]}: tension range [MN]"] = (f"{L['fairlead_tension'].min() / 1e6:.1f}-"
+                                                f"{L['fairlead_tension'][k] / 1e6:.1f} (peak {L['time'][k]:.1f} s)")
+        r[f"{line[5:]}: slack [s]"] = ", ".join(f"{a:.1f}-{b:.1f}" for a, b in spells) or "never"
+    p, b = s["points_ship"], s["body_ship"]
+    r["CoM height [m] (design 132.48)"] = f"{p['com_y'].min():.1f} / {p['com_y'].max():.1f}"
+    r["CoM surge [m]"] = f"{p['com_x'].min():.1f} / {p['com_x'].max():.1f}"
+    r["pitch [deg]"] = f"{np.degrees(b['pitch']).min():+.1f} / {np.degrees(b['pitch']).max():+.1f}"
+    r["bow / stern deck end lowest [m]"] = f"{p['bow_y'].min():.1f} / {p['stern_y'].min():.1f}"
+    F = s["wrench_ship"]["Fy"]
+    r["fluid Fy [MN]"] = f"{F.min() / 1e6:.0f}-{F.max() / 1e6:.0f}"
+    w = s["green_water_ship"]
+    k = np.argmax(w["volume"])
+    r["green water, most [m^3]"] = f"{w['volume'][k]:.0f}" + (f" ({w['time'][k]:.1f} s)" if w["volume"][k] > 0 else "")
+    pr = s["probes"]
+    r["sensors 1-4, 0.3 s mean peak [kPa]"] = " / ".join(
+        f"{pr[f'sensor{k}_interpolated_mean'].max() / 1e3:.0f}" for k in range(1, 5))
+    g = s["gauges"]
+    r["gauge 150 m [m]"] = f"{g['G150'].min():.1f}-{g['G150'].max():.1f}"
+    if not np.isnan(g["G200_side"]).all():
+        k = np.nanargmax(g["G200_side"])
+        r["gauge at the focus, 200 m [m]"] = (f"{np.nanmin(g['G200_side']):.1f}-{g['G200_side'][k]:.1f} "
+                                              f"(crest {g['time'][k]:.1f} s)")
+    return r
+
+
+def table(names, all_rows):
+    print("| " + " | ".join(["quantity"] + names) + " |")
+    print("|---" * (len(names) + 1) + "|")
+    for label in all_rows[0]:
+        print("| " + " | ".join([label] + [r[label] for r in all_rows]) + " |")
+
+
+def plot(names, windows, png):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    fig, ax = plt.subplots(6, 1, figsize=(9, 14), sharex=True)
+    for name, s in zip(names, windows):
+        p, b = s["points_ship"], s["body_ship"]
+        ax[0].plot(p["time"], p["com_y"], lw=0.8, label=name)
+        ax[1].plot(b["time"], np.degrees(b["pitch"]), lw=0.8, label=name)
+        for a, line in zip(ax[2:4], ["line_fore", "line_aft_port"]):
+            a.plot(s[line]["time"], s[line]["fairlead_tension"] / 1e6, lw=0.8, label=name)
+        ax[4].plot(s["wrench_ship"]["time"], s["wrench_ship"]["Fy"] / 1e6, lw=0.8, label=name)
+        ax[5].plot(s["green_water_ship"]["time"], s["green_water_ship"]["volume"], lw=0.8, label=name)
+    labels = ["CoM height [m]", "pitch [deg]", "fore tension [MN]", "aft port tension [MN]", "fluid Fy [MN]",
+              "green water [m^3]"]
+    for a, lab in zip(ax, labels):
+        a.set_ylabel(lab)
+        a.legend(fontsize=7)
+    ax[-1].set_xlabel("t [s]")
+    fig.tight_layout()
+    fig.savefig(png, dpi=90)
+
+
+def main():
+    if len(sys.argv) < 5:
+        sys.exit(__doc__)
+    t0, t1, png = float(sys.argv[1]), float(sys.argv[2]), sys.argv[3]
+    names, windows = [], []
+    for arg in sys.argv[4:]:
+        if "=" not in arg:
+            sys.exit(f"compare_variants.py: '{arg}' is not NAME=RUN_DIR[,RUN_DIR...]")
+        name, dirs = arg.split("=", 1)
+        names.append(name)
+        windows.append(window(stitch(dirs.split(",")), t0, t1))
+    table(names, [rows(s) for s in windows])
+    plot(names, windows, png)
+
+
+if __name__ == "__main__":
+    main()
