@@ -316,6 +316,11 @@ std::vector<double> LumpedMassLine::saveState() const {
   return out;
 }
 
+void LumpedMassLine::startWithoutSavedState(const LineEnds& ends, double time) {
+  initialize(ends);  // the static catenary (or straight) shape between the restored ends
+  time_ = time;      // the wave field the line sees continues from the restart time
+}
+
 void LumpedMassLine::restoreState(const std::vector<double>& state) {
   const std::size_t nodes = static_cast<std::size_t>(p_.segments) + 1;
   if (state.size() != 6 * nodes + 3) {

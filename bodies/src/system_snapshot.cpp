@@ -73,7 +73,12 @@ void MultibodySystem::restore(const SystemSnapshot& snap) {
         force.enable(s);
       }
     }
-    if (!l.internalState.empty()) line.model->restoreState(l.internalState);
+    if (!l.internalState.empty()) {
+      line.model->restoreState(l.internalState);
+    } else if (!line.cable) {
+      m.system.realize(s, SimTK::Stage::Velocity);  // the ends' restored positions and speeds
+      line.model->startWithoutSavedState(m.endsOf(s, line, true), snap.time);
+    }
   }
   detail::StdoutCapture capture;  // a CablePath prints again on initialisation
   m.integ->initialize(s);

@@ -1,5 +1,7 @@
 // Snapshot/restore: a restored system continues the run as if never interrupted, and
-// restoring into a system with a different mass gives the new closed-form period.
+// restoring into a system with a different mass gives the new closed-form period, and a
+// lumped-mass line restored from a stateless model's snapshot starts from the restored pose.
+#include <moorsph/bodies/elastic_catenary.hpp>
 #include <moorsph/bodies/lumped_mass_line.hpp>
 #include <moorsph/bodies/multibody_system.hpp>
 #include <moorsph/bodies/tension_only_spring.hpp>
@@ -122,4 +124,75 @@ TEST(SystemSnapshot, RestoringIntoAHeavierBodyGivesTheNewPeriod) {
   std::printf("[figure] mass doubled by restore: period %.6f s vs %.6f s\n", period, expected);
   EXPECT_NEAR(period, expected, 1e-6 * expected);
   EXPECT_DOUBLE_EQ(heavy->massProperties(0).mass, 2.0);
+}
+
+namespace {
+// A body hung from a spring above and tied by a 1.6 m line (4.905 N/m in air, EA 1e4 N) to an
+// anchor 1.2 m aside and 1 m below its fairlead, the line either an elastic catenary
+// (stateless) or lumped masses (32 segments, the state a snapshot carries).
+std::unique_ptr<mb::MultibodySystem> makeTiedBody(bool lumped) {
+  mb::SystemOptions opt;
+  opt.accuracy = 1e-10;
+  auto sys = std::make_unique<mb::MultibodySystem>(opt);
+  mb::RigidBodySpec spec;
+  spec.mass = 2.0;
+  spec.inertiaAboutCom = Eigen::Matrix3d::Identity() * 0.1;
+  spec.mobilizer = mb::Mobilizer::Planar;
+  spec.initial.position = Eigen::Vector3d(0.0, -1.0, 0.0);
+  spec.initial.velocity = Eigen::Vector3d(-1.0, 0.0, 0.0);  // away from the anchor: the line tightens
+  sys->addBody(spec);
+  mb::TensionOnlySpringParams p;
+  p.stiffness = 200.0;
+  p.restLength = 0.9;
+  sys->addLine("spring", mb::LineAttachment{}, std::make_unique<mb::TensionOnlySpring>(p));
+  mb::LineAttachment tie;
+  tie.anchorPoint = Eigen::Vector3d(1.1, -2.0, 0.0);
+  if (lumped) {
+    mb::LumpedMassParams c;
+    c.length = 1.6;
+    c.segments = 32;
+    c.massPerLength = 0.5;
+    c.diameter = 0.01;
+    c.waterDensity = 0.0;  // in air: the catenary's weight is m g
+    c.axialStiffness = 1e4;
+    c.internalDampingRatio = 0.0;  // no strain-rate force: the tensions compared are static
+    c.seabed = false;
+    sys->addLine("tie", tie, std::make_unique<mb::LumpedMassLine>(c));
+  } else {
+    mb::ElasticCatenaryParams c;
+    c.length = 1.6;
+    c.axialStiffness = 1e4;
+    c.weightPerLength = 0.5 * 9.81;
+    c.anchorOnSeabed = false;
+    sys->addLine("tie", tie, std::make_unique<mb::ElasticCatenary>(c));
+  }
+  sys->initialize();
+  return sys;
+}
+}  // namespace
+
+TEST(SystemSnapshot, LumpedLineRestartedFromAStatelessModelHangsFromTheRestoredPose) {
+  // The ship variants may switch a line's model at a restart. A snapshot of a stateless
+  // line has no nodes: the lumped line must start from the static shape between the
+  // restored ends (where the catenary left it), not from the shape it had at t = 0.
+  auto catenary = makeTiedBody(false);
+  const double t0Tension = catenary->lineDiagnostics(1).fairleadTension;
+  catenary->advanceTo(0.15);
+  const mb::LineDiagnostics before = catenary->lineDiagnostics(1);
+  const Eigen::Vector3d fairlead = catenary->kinematics(0).position;
+  auto lumped = makeTiedBody(true);
+  const double t0Lumped = lumped->lineDiagnostics(1).fairleadTension;
+  lumped->restore(catenary->snapshot());
+  const mb::LineDiagnostics after = lumped->lineDiagnostics(1, true);
+  std::printf("[figure] tie tension at t = 0: catenary %.2f N, lumped %.2f N; at the restart (0.15 s): catenary %.2f N, "
+              "lumped %.2f N\n", t0Tension, t0Lumped, before.fairleadTension, after.fairleadTension);
+  ASSERT_GT(std::abs(before.fairleadTension - t0Tension), 0.3 * t0Tension);  // the pose has moved the line
+  EXPECT_LT((after.shape.front() - fairlead).norm(), 1e-9);
+  EXPECT_NEAR(after.fairleadTension, before.fairleadTension, 0.03 * before.fairleadTension);
+  lumped->advanceTo(0.16);  // and it carries on from there without a jolt
+  catenary->advanceTo(0.16);
+  const double lumpedLater = lumped->lineDiagnostics(1).fairleadTension;
+  const double catenaryLater = catenary->lineDiagnostics(1).fairleadTension;
+  std::printf("[figure] 0.01 s later: catenary %.2f N, lumped %.2f N\n", catenaryLater, lumpedLater);
+  EXPECT_NEAR(lumpedLater, catenaryLater, 0.1 * catenaryLater);
 }

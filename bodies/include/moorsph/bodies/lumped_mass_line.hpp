@@ -95,6 +95,7 @@ class LumpedMassLine final : public MooringLine {
   /// Node positions and velocities, dissipated energy and end work, flattened.
   std::vector<double> saveState() const override;
   void restoreState(const std::vector<double>& state) override;
+  void startWithoutSavedState(const LineEnds& ends, double time) override;
 
   double stableTimeStep() const { return stableStep_; }
   double timeStep() const { return dt_; }

@@ -96,6 +96,11 @@ class MooringLine {
   /// (empty for stateless models).
   virtual std::vector<double> saveState() const { return {}; }
   virtual void restoreState(const std::vector<double>& state) { (void)state; }
+  /// A restart whose snapshot holds no state for this line (it was saved while the line
+  /// had a stateless model): a dynamic line starts from its static shape between the
+  /// restored ends, with its clock at `time`, instead of from the shape it was given at
+  /// the initial pose (the fairlead has moved since). Stateless models ignore it.
+  virtual void startWithoutSavedState(const LineEnds& ends, double time) { (void)ends; (void)time; }
 
   /// Tension above which the line breaks (N); infinity means unbreakable.
   double breakingLoad() const { return breakingLoad_; }
