@@ -70,6 +70,26 @@ std::string changedParticleSetKey(const std::string& saved, const std::string& c
   return "";
 }
 
+/// Log notes for the mooring lines (matched by name) whose model differs from the one in
+/// the scene a checkpoint was written for: what the restarted line starts from.
+std::vector<std::string> changedLineModels(const std::string& saved, const std::string& current) {
+  const YAML::Node a = YAML::Load(saved)["moorings"], b = YAML::Load(current)["moorings"];
+  std::vector<std::string> notes;
+  if (!a.IsSequence() || !b.IsSequence()) return notes;
+  for (const YAML::Node& now : b)
+    for (const YAML::Node& before : a) {
+      if (before["name"].as<std::string>("") != now["name"].as<std::string>("-")) continue;
+      const std::string from = before["model"].as<std::string>(""), to = now["model"].as<std::string>("");
+      if (from == to) continue;
+      const char* start = to == "lumped_mass" ? "it starts at rest in its static shape between the restored ends"
+                          : from == "lumped_mass" ? "the saved nodes are dropped"
+                                                  : "neither model keeps a state of its own";
+      notes.push_back("line '" + now["name"].as<std::string>() + "': " + from + " in the checkpoint's run, " + to +
+                      " now (" + start + ")");
+    }
+  return notes;
+}
+
 /// Whether the scene a checkpoint was written for builds the same boundary particles
 /// (surfaces by name, positions to 1e-9 m) as `built`: then a geometry written differently
 /// (e.g. a face given the full period instead of stopping one spacing short of it, which
@@ -192,7 +212,11 @@ int runDim(const io::SceneConfig& config, const RunOptions& o, const std::string
   if (co)
     for (const auto& line : describeBodies(config, co->bodies())) log.line("  " + line);
 #endif
-  if (restarting) log.line(format("  restarted from t = %.6g s, step %.0f", restored.time, static_cast<double>(restored.steps)) + " (" + o.restart + ")");
+  if (restarting) {
+    log.line(format("  restarted from t = %.6g s, step %.0f", restored.time, static_cast<double>(restored.steps)) + " (" +
+             o.restart + ")");
+    for (const std::string& note : changedLineModels(restored.scene_yaml, resolved)) log.line("  note: " + note);
+  }
 
   io::SeriesFile series(out + "/series.h5");
   cases::RunRecorder<D> recorder(sim, series, config.output.interval);

@@ -173,6 +173,17 @@ TEST(BodyRuns, RestartMayChangeMassAndLineButNotTheBody) {
   const double dv = h.bodies[0].velocity.y() - s.bodies[0].velocity.y();
   EXPECT_LT(dv, -0.25 * 0.5 * 9.81 * 0.04) << "a heavier box must sink faster";
   EXPECT_NE(slurp(dir + "/heavy/log.txt").find("mass 20 kg/m"), std::string::npos);
+  // A line may change between models; the log says what the restarted line starts from.
+  app::RunOptions lumped = options(scene, dir + "/lumped", 0.12);
+  lumped.restart = dir + "/first/checkpoint.h5";
+  lumped.sets = {"moorings.0.model=lumped_mass", "moorings.0.length=0.2", "moorings.0.axial_stiffness=20",
+                 "moorings.0.mass_per_length=0.1", "moorings.0.diameter=0.005", "moorings.0.segments=5"};
+  ASSERT_EQ(app::runScene(lumped), app::kSuccess);
+  EXPECT_NE(slurp(dir + "/lumped/log.txt")
+                .find("note: line 'tether': tension_only_spring in the checkpoint's run, lumped_mass now (it starts at "
+                      "rest in its static shape between the restored ends)"),
+            std::string::npos)
+      << slurp(dir + "/lumped/log.txt");
   app::RunOptions bigger = options(scene, dir + "/bigger", 0.14);
   bigger.restart = dir + "/first/checkpoint.h5";
   bigger.sets = {"bodies.0.shape.box.size=[0.3, 0.1]"};
