@@ -155,3 +155,15 @@ write("ship_catenary", """# METHOD.md 6.5 variant: the three cables as elastic c
 # lines are not in the SPH fluid (their still water level is the scene's highest water top).
 #
 # Otherwise as ship_base.yaml (the ship, frames, economies and sensors are described there).""", body)
+
+# Lumped-mass lines: the catenary's cables with mass, drag and added mass (the
+# scene-reference defaults for a wire rope: C_dn 1.2, C_an 1.0), 20 segments of 7.9 m.
+# Meant as a restart variant from the spring base's 265 s checkpoint: the lines take their
+# static shape at the restored pose (MooringLine::startWithoutSavedState).
+lumped = body.replace("model: elastic_catenary", "model: lumped_mass")
+write("ship_lumped", """# METHOD.md 6.5 variant: the three cables as dynamic lumped-mass lines (bodies/ lumped_mass:
+# 20 segments, 45 kg/m in air, EA = 2.6707e8 N = k L0, normal drag 1.2 and added mass 1.0 on
+# the 90 mm diameter, in still water) instead of massless tension-only springs. Their
+# inertia and drag are what the quasi-static models lack: the snap when a slack line comes
+# taut. The lines are not in the SPH fluid.
+""" + RESTART.format(name="ship_lumped"), lumped)
