@@ -5,7 +5,8 @@
 
 Each NAME names one variant; its RUN_DIRs are the segments of that run in order (a run
 continued from a checkpoint), stitched as plot_ship_run.py does. Prints a Markdown table
-of what issue 7 asks to compare (cable peaks and slack spells, heave, pitch, deck-end
+of what issue 7 asks to compare (cable peaks, slack spells and the fastest rise of tension
+between samples, a snap's signature; heave, pitch, deck-end
 heights, fluid force, green water, hull-pressure peaks) over T0 <= t <= T1, one column
 per variant, and writes one PNG overlaying the variants' time series.
 """
@@ -18,6 +19,7 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from plot_ship_run import stitch  # noqa: E402
 
 LINES = ["line_fore", "line_aft_port", "line_aft_starboard"]
+HANGING = 0.5e6  # [N]: a fairlead tension below this counts as a hanging (slack) line
 DESIGN_COM_Y = 132.48  # [m]: the CoM height at the design pose (ship_base.yaml, docs/validation/ship.md)
 
 
@@ -55,6 +57,15 @@ def rows(s):
         r[f"{line[5:]}: tension range [MN]"] = (f"{L['fairlead_tension'].min() / 1e6:.1f}-"
                                                 f"{L['fairlead_tension'][k] / 1e6:.1f} (peak {L['time'][k]:.1f} s)")
         r[f"{line[5:]}: slack [s]"] = ", ".join(f"{a:.1f}-{b:.1f}" for a, b in spells) or "never"
+        # The catenary and lumped-mass lines hang on their weight where a spring goes slack
+        # and rarely raise the flag: the time below HANGING reads alike for every model.
+        hanging = slack_spells(L["time"], (L["fairlead_tension"] < HANGING).astype(float))
+        r[f"{line[5:]}: below {HANGING / 1e6:g} MN [s]"] = ", ".join(f"{a:.1f}-{b:.1f}" for a, b in hanging) or "never"
+        # Skips the window's first second: a restart variant's changed line steps there.
+        late = L["time"] >= L["time"][0] + 1.0
+        rise = np.diff(L["fairlead_tension"][late]) / np.diff(L["time"][late])
+        k = np.argmax(rise)
+        r[f"{line[5:]}: fastest rise [MN/s]"] = f"{rise[k] / 1e6:.1f} ({L['time'][late][k]:.1f} s)"
     p, b = s["points_ship"], s["body_ship"]
     r["CoM height [m] (design 132.48)"] = f"{p['com_y'].min():.1f} / {p['com_y'].max():.1f}"
     r["CoM surge [m]"] = f"{p['com_x'].min():.1f} / {p['com_x'].max():.1f}"
