@@ -8,7 +8,8 @@ continued from a checkpoint), stitched as plot_ship_run.py does. Prints a Markdo
 of what issue 7 asks to compare (cable peaks, slack spells and the fastest rise of tension
 between samples, a snap's signature; heave, pitch, deck-end
 heights, fluid force, green water, hull-pressure peaks) over T0 <= t <= T1, one column
-per variant, and writes one PNG overlaying the variants' time series.
+per variant, and writes one PNG overlaying the variants' time series. The table's logic
+and plot_ship_run.stitch are tested by tests/cases/ship/test_compare_variants.py.
 """
 import os
 import sys
