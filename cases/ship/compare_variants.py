@@ -34,18 +34,19 @@ def window(series, t0, t1):
     return out
 
 
-def slack_spells(time, slack):
-    """[(start, end)] of the intervals where `slack` is set."""
-    spells, start = [], None
-    for t, s in zip(time, slack > 0.5):
-        if s and start is None:
+def spells(time, flag):
+    """[(start, end)] of the intervals where the boolean array `flag` holds: from the first
+    sample that has it to the first that has not."""
+    out, start = [], None
+    for t, f in zip(time, flag):
+        if f and start is None:
             start = t
-        if not s and start is not None:
-            spells.append((start, t))
+        if not f and start is not None:
+            out.append((start, t))
             start = None
     if start is not None:
-        spells.append((start, time[-1]))
-    return spells
+        out.append((start, time[-1]))
+    return out
 
 
 def rows(s):
@@ -54,13 +55,13 @@ def rows(s):
     for line in LINES:
         L = s[line]
         k = np.argmax(L["fairlead_tension"])
-        spells = slack_spells(L["time"], L["slack"])
+        slack = spells(L["time"], L["slack"] > 0.5)
         r[f"{line[5:]}: tension range [MN]"] = (f"{L['fairlead_tension'].min() / 1e6:.1f}-"
                                                 f"{L['fairlead_tension'][k] / 1e6:.1f} (peak {L['time'][k]:.1f} s)")
-        r[f"{line[5:]}: slack [s]"] = ", ".join(f"{a:.1f}-{b:.1f}" for a, b in spells) or "never"
+        r[f"{line[5:]}: slack [s]"] = ", ".join(f"{a:.1f}-{b:.1f}" for a, b in slack) or "never"
         # The catenary and lumped-mass lines hang on their weight where a spring goes slack
         # and rarely raise the flag: the time below HANGING reads alike for every model.
-        hanging = slack_spells(L["time"], (L["fairlead_tension"] < HANGING).astype(float))
+        hanging = spells(L["time"], L["fairlead_tension"] < HANGING)
         r[f"{line[5:]}: below {HANGING / 1e6:g} MN [s]"] = ", ".join(f"{a:.1f}-{b:.1f}" for a, b in hanging) or "never"
         # Skips the window's first second: a restart variant's changed line steps there.
         late = L["time"] >= L["time"][0] + 1.0

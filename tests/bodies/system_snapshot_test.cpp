@@ -128,7 +128,7 @@ TEST(SystemSnapshot, RestoringIntoAHeavierBodyGivesTheNewPeriod) {
 
 namespace {
 // A body hung from a spring above and tied by a 1.6 m line (4.905 N/m in air, EA 1e4 N) to an
-// anchor 1.2 m aside and 1 m below its fairlead, the line either an elastic catenary
+// anchor 1.1 m aside and 1 m below its start, the line either an elastic catenary
 // (stateless) or lumped masses (32 segments, the state a snapshot carries).
 std::unique_ptr<mb::MultibodySystem> makeTiedBody(bool lumped) {
   mb::SystemOptions opt;
