@@ -7,4 +7,6 @@ bash scripts/build.sh
 export OMP_WAIT_POLICY=passive
 cd build
 if [ $# -eq 0 ]; then set -- -L "fast|stability"; fi
-ctest --output-on-failure "$@"
+# Tests run side by side, one per core: each test reserves the cores its THREADS takes
+# (cmake/MoorsphTesting.cmake), most one, so none is oversubscribed.
+ctest --output-on-failure -j"$(nproc)" "$@"

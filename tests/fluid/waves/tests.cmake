@@ -13,7 +13,8 @@ if(TARGET moorsph_wave_tanks)
   moorsph_add_gtest(NAME test_wave_tanks
     SOURCES ${CMAKE_CURRENT_LIST_DIR}/test_wave_tanks.cpp
     LIBS moorsph_wave_tanks
-    LABELS fast)
+    LABELS fast
+    COST 140)
 endif()
 # A free wave's period against the dispersion relation (about 25 CPU seconds).
 if(TARGET moorsph_wave_tanks)
