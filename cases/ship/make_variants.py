@@ -92,6 +92,36 @@ write("ship_dx2", """# METHOD.md 6.5 variant: dx = 2 m (the reference's coarse r
 #
 # Otherwise as ship_base.yaml (the ship, frames, economies and sensors are described there).""", body)
 
+def at_spacing(dx, far_wall_x):
+    """The base at spacing dx, its far wall (and the water, floor and damping zone's end) moved
+    to far_wall_x, a multiple of dx: a fill that stopped short of the wall would leave a gap
+    that lowers the still level (0.75 m for a 4 m gap)."""
+    body = replace(BODY, "dx: 4.0                       # [m]", f"dx: {dx:.1f}                       # [m]")
+    x = f"{far_wall_x:g}"
+    body = replace(body, "upper: [700, 0, 72]", f"upper: [{x}, 0, 72]")
+    body = replace(body, "lower: [700, -20, 0], upper: [720, 172, 72]", f"lower: [{x}, -20, 0], upper: [720, 172, 72]")
+    body = replace(body, "upper: [700, 132, 72], packed: true}", f"upper: [{x}, 132, 72], packed: true}}")
+    return replace(body, "{x_start: 520, x_end: 700, k_max: 1.0}", f"{{x_start: 520, x_end: {x}, k_max: 1.0}}")
+
+
+# dx = 6 m and 3 m with the 4 m base: a three-spacing study (6, 4 and 3 m divide the 132 m
+# depth and the 72 m period, not the 700 m length).
+write("ship_dx6", """# METHOD.md 6.5 variant: dx = 6 m, from t = 0: the coarsest of a three-spacing study with
+# the 4 m base and ship_dx3.yaml (the reference's "coarser dx" variant, here coarser than a
+# base that is itself coarse). About 0.3x the particles of the base and 1.5x its time step;
+# 2 particles over the 12.2 m draught. The far wall stands at x = 696 m instead of 700 m
+# (6 m does not divide 700 m), so the damping zone is 176 m long instead of 180 m.
+#
+# Otherwise as ship_base.yaml (the ship, frames, economies and sensors are described there).""", at_spacing(6.0, 696))
+body = at_spacing(3.0, 699)
+body = replace(body, "particles_interval: 5.0", "particles_interval: 10.0")
+write("ship_dx3", """# METHOD.md 6.5 variant: dx = 3 m, from t = 0: the finest of a three-spacing study with
+# ship_dx6.yaml and the 4 m base. About 2.4x the particles of the base and 0.75x its time
+# step (`moorsph check`: about 8 h on 2 threads). The far wall stands at x = 699 m instead of
+# 700 m (3 m does not divide 700 m).
+#
+# Otherwise as ship_base.yaml (the ship, frames, economies and sensors are described there).""", body)
+
 # Doubled carrier wavelength: k0 = 0.0066667 1/m (942 m, period 24.6 s), a0 = 4.5 m kept
 # (the 9 m background sea), so a0 k0 = 0.03; k0 d >= 1.75 needs d = 264 m.
 body = deepen(BODY, 132)
