@@ -83,15 +83,6 @@ for factor, name in ((1.3, "ship_mass130"), (2.0, "ship_mass200")):
 # (the restart keeps the particles); from 265 s the heavier ship sinks toward its new draught
 # (about {(factor - 1) * 52196 / 1e3 * 0.137 / 1:.1f} m deeper at 0.137 m per 1000 t, less the cables' give) while the waves arrive.""" + RESTART.replace("{name}", name), body)
 
-# dx = 2 m: only the spacing changes (the boxes and the piston span the z period).
-body = BODY
-body = replace(body, "dx: 4.0                       # [m]", "dx: 2.0                       # [m]")
-body = replace(body, "particles_interval: 5.0", "particles_interval: 10.0")
-write("ship_dx2", """# METHOD.md 6.5 variant: dx = 2 m (the reference's coarse resolution; its fine one is 1 m),
-# from t = 0. About 8x the particles of the 4 m base and half its time step.
-#
-# Otherwise as ship_base.yaml (the ship, frames, economies and sensors are described there).""", body)
-
 def at_spacing(dx, far_wall_x):
     """The base at spacing dx, its far wall (and the water, floor and damping zone's end) moved
     to far_wall_x, a multiple of dx: a fill that stopped short of the wall would leave a gap
@@ -103,6 +94,13 @@ def at_spacing(dx, far_wall_x):
     body = replace(body, "upper: [700, 132, 72], packed: true}", f"upper: [{x}, 132, 72], packed: true}}")
     return replace(body, "{x_start: 520, x_end: 700, k_max: 1.0}", f"{{x_start: 520, x_end: {x}, k_max: 1.0}}")
 
+
+# dx = 2 m: only the spacing changes (2 m divides the 700 m length).
+body = replace(at_spacing(2.0, 700), "particles_interval: 5.0", "particles_interval: 10.0")
+write("ship_dx2", """# METHOD.md 6.5 variant: dx = 2 m (the reference's coarse resolution; its fine one is 1 m),
+# from t = 0. About 8x the particles of the 4 m base and half its time step.
+#
+# Otherwise as ship_base.yaml (the ship, frames, economies and sensors are described there).""", body)
 
 # dx = 6 m and 3 m with the 4 m base: a three-spacing study (6, 4 and 3 m divide the 132 m
 # depth and the 72 m period, not the 700 m length).
@@ -117,7 +115,8 @@ body = at_spacing(3.0, 699)
 body = replace(body, "particles_interval: 5.0", "particles_interval: 10.0")
 write("ship_dx3", """# METHOD.md 6.5 variant: dx = 3 m, from t = 0: the finest of a three-spacing study with
 # ship_dx6.yaml and the 4 m base. About 2.4x the particles of the base and 0.75x its time
-# step (`moorsph check`: about 8 h on 2 threads). The far wall stands at x = 699 m instead of
+# step (`moorsph check` on one shared thread: 10.8 h; about 7 h on 2 threads at the base's
+# 9e5 particle-steps/s). The far wall stands at x = 699 m instead of
 # 700 m (3 m does not divide 700 m).
 #
 # Otherwise as ship_base.yaml (the ship, frames, economies and sensors are described there).""", body)
