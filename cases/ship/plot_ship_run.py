@@ -19,7 +19,7 @@ import h5py  # noqa: E402
 import numpy as np  # noqa: E402
 
 GROUPS = {
-    "gauges": ["G150", "G200_side"],  # G200_side: at the focus (not in the tiny scenes)
+    "gauges": ["G150", "G200_side", "G470"],  # G200_side: at the focus; G470: 470 m (not in the tiny scenes)
     "points_ship": ["com_y", "bow_y", "stern_y", "com_x", "com_z"],
     "body_ship": ["roll", "pitch", "yaw"],
     "line_fore": ["fairlead_tension", "slack"],

@@ -19,6 +19,7 @@ import numpy as np
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "..", "..", "cases", "ship"))
 import compare_variants as cv  # noqa: E402
+import mean_levels as ml  # noqa: E402
 from plot_ship_run import GROUPS, stitch  # noqa: E402
 
 failures = []
@@ -55,6 +56,7 @@ def write_segment(path, t0, t1, offset):
             f[f"probes/sensor{k}_interpolated_mean"][...] = 1e3 * k * (1 + np.sin(t))
         f["gauges/G150"][...] = 132.0 + 2.0 * np.sin(t)
         f["gauges/G200_side"][...] = 132.0 + 3.0 * np.sin(2 * np.pi * (t - 13.0) / 20.0 + np.pi / 2)
+        f["gauges/G470"][...] = 132.0 - 0.01 * t  # a level falling 1 cm/s
 
 
 with tempfile.TemporaryDirectory() as d:
@@ -79,7 +81,20 @@ with tempfile.TemporaryDirectory() as d:
     check("sensors", r["sensors 1-4, 0.3 s mean peak [kPa]"], "2 / 4 / 6 / 8")
     check("focus gauge", r["gauge at the focus, 200 m [m]"], "129.0-135.0 (crest 13.0 s)")
 
+    # Window means over one whole period of the tension, 10 <= t < 20 s (the second
+    # segment's rows): the tension's sampled mean is within 0.01 MN of its integral
+    # (1 / 2 pi)(5 x 4 pi / 3 + 10 sqrt 3) = 10/3 + 5 sqrt(3) / pi; the falling gauge's mean is
+    # its value at the samples' middle (14.975 s); CoM = 130 + the mean of sin t.
+    m = ml.levels(s, 10.0, 20.0)
+    tt = np.round(np.arange(10.0, 20.0 - 1e-9, 0.05), 6)  # the samples in [10, 20)
+    check("mean tension over a period", round(m["fore"], 6), round(float(tension(tt).mean()) / 1e6, 6))
+    check("mean tension near its integral", abs(m["fore"] - (10.0 / 3.0 + 5.0 * np.sqrt(3) / np.pi)) < 0.01, True)
+    check("falling gauge", round(m["G470"], 4), round(132.0 - 0.01 * 14.975, 4))
+    check("CoM from the second segment", round(m["CoM"], 6), round(130.0 + float(np.sin(tt).mean()), 6))
+    check("windows", ml.parse_windows("20-30,60-100"), [(20.0, 30.0), (60.0, 100.0)])
+    check("an empty window", np.isnan(ml.levels(s, 30.0, 40.0)["CoM"]), True)
+
 if failures:
     print("\n".join(failures))
     sys.exit(1)
-print("compare_variants: stitching, peaks, slack and hanging spells, fastest rise, green water, sensors and gauges as expected")
+print("compare_variants: stitching, peaks, slack and hanging spells, fastest rise, green water, sensors, gauges and window means as expected")
