@@ -9,10 +9,18 @@
 //  - the median's trailing mean over 4 H / c_s = 34.3 ms (the scene's probe moving_mean)
 //    peaks at 1.76 over the first impact.
 // Asserted: the run finishes (no particle escapes: the run guards would stop it); the
-// arrival within 0.1 T of the median's; the plateau within 10% of the median's; the
-// smoothed first impact is an impact (above 1.5 times the plateau) and no acoustic
-// blow-up (below 1.5 times the median's 1.76). Measured at dx = 10 mm (docs/validation/
-// lobovsky-dam-break.md): arrival 2.49, plateau 0.563, smoothed peak 1.13.
+// arrival within 0.1 T of the median's; the plateau between 0.6 and 1.2 times the median's;
+// the smoothed first impact is an impact (above 1.5 times the plateau) and no acoustic
+// blow-up (below 1.5 times the median's 1.76).
+// Why the plateau's bounds are that wide: after the impact the flow is chaotic, and one
+// run's plateau is one draw. Ten 10 mm runs that differed only in the time step (CFL
+// 0.2-0.5), the integrator or the thread count (summation order) gave 0.366-0.558, mean
+// 0.463 (docs/validation/lobovsky-dam-break.md, session 35); the experiment's own
+// repeats spread 0.471-0.704 (its 2.5-97.5 % curves averaged over the window). The former
+// bound (10% of the median) passed only for the time step it was set at. The bounds still
+// catch a lost wall load or a density drift such as particle shifting's (+45% here).
+// Measured at this setting (CFL 0.3, two threads): arrival 2.485, plateau 0.524, smoothed
+// peak 0.99.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -68,7 +76,8 @@ TEST(LobovskyDamBreak, ArrivalPlateauAndImpactAtSensor2AgainstTheExperiment) {
   std::printf("sensor 2 at dx = 10 mm: arrival t/T %.3f (measured 2.46), plateau %.3f rho g H (0.589), "
               "34 ms mean peak %.2f (1.76)\n", arrival, plateau, peak);
   EXPECT_NEAR(arrival, 2.46, 0.1);
-  EXPECT_NEAR(plateau, 0.589, 0.1 * 0.589);
+  EXPECT_GT(plateau, 0.6 * 0.589);
+  EXPECT_LT(plateau, 1.2 * 0.589);
   EXPECT_GT(peak, 1.5 * plateau);
   EXPECT_LT(peak, 1.5 * 1.76);
 }
