@@ -11,6 +11,12 @@ usage: lobovsky_report.py reference OUT_DIR [WIDTH]
        lobovsky_report.py report --out PREFIX RUN_DIR [RUN_DIR ...]
          writes PREFIX.md (table) and PREFIX.png (P2 against the 2.5-97.5 % band), prints
          the table
+       lobovsky_report.py ensemble --out PREFIX RUN_DIR [RUN_DIR ...]
+         runs of one spacing that differ only in a detail (time step, integrator, thread
+         count): after the impact the flow is chaotic and one run is one draw, as each of
+         the experiment's repeats is. Writes PREFIX.md (per run, and the ensemble's mean,
+         standard deviation and range of the peak and plateau, 34 ms means) and PREFIX.png
+         (every member against the band)
 
 The reference file (../shared/refdata/lobovsky2014/) holds, per t/T, the 2.5 %, 50 % and
 97.5 % percentiles of p/(rho g H) over 100 repeats (the paper's figure 31). Per run, per
@@ -146,6 +152,21 @@ def fluid_particles(run_dir):
     return 0
 
 
+def threads(run_dir):
+    """From the run's log line "2D scene '..': N fluid, M boundary particles, K threads"."""
+    try:
+        with open(os.path.join(run_dir, "log.txt")) as f:
+            for line in f:
+                words = line.replace(",", " ").split()
+                if "threads" in words[1:]:
+                    k = words.index("threads")
+                    if words[k - 1].isdigit():
+                        return int(words[k - 1])
+    except OSError:
+        pass
+    return 0
+
+
 def report(out, run_dirs):
     ref = load_reference()
     ref_m = measures(ref["t"], ref["median"], ref)
@@ -192,7 +213,47 @@ def report(out, run_dirs):
     plot(out + ".png", smoothed_reference(ref, curves[0][4]), curves)
 
 
-def plot(path, ref, curves):
+def ensemble(out, run_dirs):
+    """Peak and plateau (centred 4 H / c_s means) per member and over the members."""
+    ref = load_reference()
+    members, curves = [], []
+    for run in run_dirs:
+        if not finished(run):
+            print("skipped (the run did not finish: see its log.txt): %s" % run)
+            continue
+        scene, probes, wall, steps = read_run(run)
+        width = 4.0 * H / scene["fluid"]["sound_speed"]
+        t = probes["time"] / T
+        smooth = {est: centred_mean(probes["time"], probes["P2_" + est] / PSCALE, width) for est in ESTIMATES}
+        m = {est: measures(t, smooth[est], smoothed_reference(ref, width)) for est in ESTIMATES}
+        method = scene.get("method", {})
+        label = "%s, CFL %g, %d thread(s)" % (method.get("integrator", "predictor_corrector"), method.get("cfl", 0.5),
+                                              threads(run))
+        members.append((os.path.basename(os.path.normpath(run)), label, steps, wall, m))
+        curves.append((scene["resolution"]["dx"], t, smooth["interpolated"], smooth["reaction"], width, " " + label))
+    if not members:
+        sys.exit("lobovsky_report.py ensemble: no finished run")
+    sref = smoothed_reference(ref, curves[0][4])
+    rm = measures(sref["t"], sref["median"], sref)
+    cols = [(est, key) for est in ESTIMATES for key in ("peak", "plateau")]
+    lines = ["Sensor 2, p / (rho g H), centred means over 4 H / c_s; dx = %g m. The median measured the same "
+             "way: peak %.2f, plateau %.3f." % (curves[0][0], rm["peak"], rm["plateau"]), "",
+             "| run | method | steps | wall [s] | " + " | ".join("%s %s" % c for c in cols) + " |",
+             "|---|---|---:|---:|" + "---:|" * len(cols)]
+    for name, label, steps, wall, m in members:
+        lines.append("| %s | %s | %s | %.0f | " % (name, label, "{:,}".format(steps), wall) +
+                     " | ".join("%.3f" % m[e][k] for e, k in cols) + " |")
+    values = {c: np.array([m[c[0]][c[1]] for _, _, _, _, m in members]) for c in cols}
+    for stat, f in (("mean", np.mean), ("standard deviation", np.std), ("lowest", np.min), ("highest", np.max)):
+        lines.append("| %s of %d | | | | " % (stat, len(members)) + " | ".join("%.3f" % f(values[c]) for c in cols) + " |")
+    text = "\n".join(lines) + "\n"
+    with open(out + ".md", "w") as fh:
+        fh.write(text)
+    print(text)
+    plot(out + ".png", sref, curves, colour="0.35")
+
+
+def plot(path, ref, curves, colour=None):
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
@@ -202,7 +263,11 @@ def plot(path, ref, curves):
         ax.fill_between(ref["t"], ref["p2.5"], ref["p97.5"], color="0.8", label="Lobovsky et al. 2014, 2.5-97.5 % (same mean)")
         ax.plot(ref["t"], ref["median"], "k", lw=1.0, label="median")
         for c in curves:
-            ax.plot(c[1], c[col], lw=0.8, label="dx = %g m (H/%.0f)%s" % (c[0], H / c[0], c[5]))
+            if colour:  # an ensemble: one colour, no legend entry per member
+                ax.plot(c[1], c[col], lw=0.6, color=colour, alpha=0.7,
+                        label="SPH runs, dx = %g m (%d)" % (c[0], len(curves)) if c is curves[0] else None)
+            else:
+                ax.plot(c[1], c[col], lw=0.8, label="dx = %g m (H/%.0f)%s" % (c[0], H / c[0], c[5]))
         ax.set_ylabel("p / (rho g H)")
         ax.set_title("sensor 2, z = 15 mm: " + title, fontsize=10)
         ax.set_ylim(-0.3, 3.0)
@@ -219,11 +284,11 @@ def main():
         write_reference(sys.argv[2], float(sys.argv[3]) if len(sys.argv) > 3 else None)
         return
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("mode", choices=["report"])
+    ap.add_argument("mode", choices=["report", "ensemble"])
     ap.add_argument("--out", required=True)
     ap.add_argument("runs", nargs="+")
     a = ap.parse_args()
-    report(a.out, a.runs)
+    (report if a.mode == "report" else ensemble)(a.out, a.runs)
 
 
 if __name__ == "__main__":
