@@ -57,11 +57,6 @@ RunSummary RunRecorder<D>::runTo(double end_time, const std::function<void(const
     while (sim_.time() < end_time - eps) {
       const bool stop = control.stop_requested && control.stop_requested();
       const bool checkpoint = stop || (control.checkpoint_due && control.checkpoint_due());
-      // cflDt() bounds every step, so a step that cannot reach the next output or the
-      // end needs no rebuild.
-      const double reach = sim_.time() + sim_.cflDt();
-      if (checkpoint || (control.rebuild_at_outputs && (reach >= outputTime(next_output_) - eps || reach >= end_time - eps)))
-        sim_.requestNeighbourRebuild();
       sim_.step();
       if (control.on_step) control.on_step();
       if (sim_.time() >= outputTime(next_output_) - eps) {

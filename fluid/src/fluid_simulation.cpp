@@ -122,6 +122,17 @@ void FluidSimulation<D>::evaluateRates(double t, bool may_rebuild) {
 }
 
 template <int D>
+void FluidSimulation<D>::restoreNeighbourLists(const std::vector<Vec<D>>& fluid_at_build,
+                                              const std::vector<Vec<D>>& boundary_at_build) {
+  PhaseTimers::Scope timing(timers_, phase_neighbours_);
+  const BoundaryParticles<D>* boundary = walls_ ? &walls_->particles() : nullptr;
+  neighbours_.restore(fluid_, fluid_at_build, boundary, boundary_at_build,
+                      walls_ ? walls_->trackedMask() : no_tracking_);
+  rebuild_requested_ = false;
+  rates_current_ = false;
+}
+
+template <int D>
 double FluidSimulation<D>::computeDt() const {
   double amax2 = 0.0;
   const std::size_t n = fluid_.size();

@@ -3,6 +3,8 @@
 #include <omp.h>
 
 #include <algorithm>
+#include <stdexcept>
+#include <string>
 
 namespace moorsph::fluid {
 
@@ -36,16 +38,22 @@ bool NeighbourSearch<D>::needsRebuild(const FluidParticles<D>& fluid, const Boun
 }
 
 template <int D>
-void NeighbourSearch<D>::sortFluidByCell(FluidParticles<D>& fluid) {
-  const std::size_t n = fluid.size();
+void NeighbourSearch<D>::countCells(const std::vector<Vec<D>>& r) {
+  const std::size_t n = r.size();
   const int cells = grid_.cellCount();
   cell_of_.resize(n);
 #pragma omp parallel for schedule(static)
-  for (std::size_t i = 0; i < n; ++i) cell_of_[i] = grid_.cellOf(fluid.r[i]);
-  // Counting sort: stable, O(n + cells).
+  for (std::size_t i = 0; i < n; ++i) cell_of_[i] = grid_.cellOf(r[i]);
   cell_start_.assign(cells + 1, 0);
   for (std::size_t i = 0; i < n; ++i) ++cell_start_[cell_of_[i] + 1];
   for (int c = 0; c < cells; ++c) cell_start_[c + 1] += cell_start_[c];
+}
+
+template <int D>
+void NeighbourSearch<D>::sortFluidByCell(FluidParticles<D>& fluid) {
+  const std::size_t n = fluid.size();
+  countCells(fluid.r);
+  // Counting sort: stable, O(n + cells).
   counts_.assign(cell_start_.begin(), cell_start_.end() - 1);
   order_.resize(n);
   for (std::size_t i = 0; i < n; ++i) order_[counts_[cell_of_[i]]++] = static_cast<std::uint32_t>(i);
@@ -53,13 +61,13 @@ void NeighbourSearch<D>::sortFluidByCell(FluidParticles<D>& fluid) {
 }
 
 template <int D>
-void NeighbourSearch<D>::indexBoundary(const BoundaryParticles<D>& boundary) {
-  const std::size_t n = boundary.size();
+void NeighbourSearch<D>::indexBoundary(const std::vector<Vec<D>>& rb) {
+  const std::size_t n = rb.size();
   const int cells = grid_.cellCount();
   boundary_cell_start_.assign(cells + 1, 0);
   cell_of_.resize(std::max(cell_of_.size(), n));
   for (std::size_t k = 0; k < n; ++k) {
-    cell_of_[k] = grid_.cellOf(boundary.r[k]);
+    cell_of_[k] = grid_.cellOf(rb[k]);
     ++boundary_cell_start_[cell_of_[k] + 1];
   }
   for (int c = 0; c < cells; ++c) boundary_cell_start_[c + 1] += boundary_cell_start_[c];
@@ -108,13 +116,38 @@ template <int D>
 void NeighbourSearch<D>::rebuild(FluidParticles<D>& fluid, const BoundaryParticles<D>* boundary,
                                  const std::vector<char>& tracked) {
   sortFluidByCell(fluid);
+  buildLists(fluid.r, boundary ? &boundary->r : nullptr, tracked);
+}
+
+template <int D>
+void NeighbourSearch<D>::restore(const FluidParticles<D>& fluid, const std::vector<Vec<D>>& fluid_at_build,
+                                 const BoundaryParticles<D>* boundary, const std::vector<Vec<D>>& boundary_at_build,
+                                 const std::vector<char>& tracked) {
+  if (fluid_at_build.size() != fluid.size())
+    throw std::invalid_argument("neighbour lists: " + std::to_string(fluid_at_build.size()) + " build positions for " +
+                                std::to_string(fluid.size()) + " fluid particles");
+  if (boundary && boundary_at_build.size() != boundary->size())
+    throw std::invalid_argument("neighbour lists: " + std::to_string(boundary_at_build.size()) +
+                                " boundary build positions for " + std::to_string(boundary->size()) +
+                                " boundary particles");
+  // The particles must be in the cell order of their build positions, as the build
+  // that produced those positions left them: then the lists come out the same.
+  countCells(fluid_at_build);
+  for (std::size_t i = 1; i < fluid_at_build.size(); ++i)
+    if (cell_of_[i] < cell_of_[i - 1])
+      throw std::invalid_argument("neighbour lists: the particles are not in the cell order of their build positions");
+  buildLists(fluid_at_build, boundary ? &boundary_at_build : nullptr, tracked);
+}
+
+template <int D>
+void NeighbourSearch<D>::buildLists(const std::vector<Vec<D>>& r, const std::vector<Vec<D>>* boundary_r,
+                                    const std::vector<char>& tracked) {
   const double radius2 = listRadius() * listRadius();
   const auto& grid = grid_;
   const auto& domain = domain_;
-  const auto& r = fluid.r;
 
   // Fluid-fluid: every j != i of the fluid within the list radius.
-  buildList(fluid.size(), fluid_fluid_, [&](std::size_t i, auto&& visit) {
+  buildList(r.size(), fluid_fluid_, [&](std::size_t i, auto&& visit) {
     const int cell = grid.cellOf(r[i]);
     for (auto c = grid.neighbourCellsBegin(cell); c != grid.neighbourCellsEnd(cell); ++c) {
       for (std::uint32_t j = cell_start_[*c]; j < cell_start_[*c + 1]; ++j) {
@@ -123,10 +156,10 @@ void NeighbourSearch<D>::rebuild(FluidParticles<D>& fluid, const BoundaryParticl
     }
   });
 
-  if (boundary) {
-    indexBoundary(*boundary);
-    const auto& rb = boundary->r;
-    buildList(fluid.size(), fluid_boundary_, [&](std::size_t i, auto&& visit) {
+  if (boundary_r) {
+    indexBoundary(*boundary_r);
+    const auto& rb = *boundary_r;
+    buildList(r.size(), fluid_boundary_, [&](std::size_t i, auto&& visit) {
       const int cell = grid.cellOf(r[i]);
       for (auto c = grid.neighbourCellsBegin(cell); c != grid.neighbourCellsEnd(cell); ++c) {
         for (std::uint32_t s = boundary_cell_start_[*c]; s < boundary_cell_start_[*c + 1]; ++s) {
@@ -147,9 +180,9 @@ void NeighbourSearch<D>::rebuild(FluidParticles<D>& fluid, const BoundaryParticl
         }
       }
     });
-    boundary_at_build_ = boundary->r;
+    boundary_at_build_ = rb;
   }
-  fluid_at_build_ = fluid.r;
+  fluid_at_build_ = r;
   ++rebuild_count_;
 }
 

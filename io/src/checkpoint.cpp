@@ -7,6 +7,27 @@
 
 namespace moorsph::io {
 
+namespace {
+
+template <int D>
+std::vector<double> flatten(const std::vector<fluid::Vec<D>>& r) {
+  std::vector<double> out;
+  out.reserve(D * r.size());
+  for (const auto& x : r)
+    for (int d = 0; d < D; ++d) out.push_back(x[d]);
+  return out;
+}
+
+template <int D>
+std::vector<fluid::Vec<D>> unflatten(const std::vector<double>& flat) {
+  std::vector<fluid::Vec<D>> out(flat.size() / D);
+  for (std::size_t i = 0; i < out.size(); ++i)
+    for (int d = 0; d < D; ++d) out[i][d] = flat[D * i + d];
+  return out;
+}
+
+}  // namespace
+
 template <int D>
 Checkpoint captureCheckpoint(const fluid::FluidSimulation<D>& sim) {
   const auto& f = sim.fluid();
@@ -25,6 +46,8 @@ Checkpoint captureCheckpoint(const fluid::FluidSimulation<D>& sim) {
   c.rho = f.rho;
   c.m = f.m;
   c.id = f.id;
+  c.r_at_build = flatten<D>(sim.neighbours().fluidAtBuild());
+  c.boundary_r_at_build = flatten<D>(sim.neighbours().boundaryAtBuild());
   if (const auto* out = sim.outflow(); out && out->tally().particles > 0) {
     const fluid::OutflowTally& t = out->tally();
     c.outflow = {static_cast<double>(t.particles), t.mass, t.energy, t.first_time};
@@ -71,6 +94,16 @@ template fluid::FluidParticles<3> restoreParticles<3>(const Checkpoint&);
 template void restoreEffectTotals<2>(const Checkpoint&, fluid::FluidSimulation<2>&);
 template void restoreEffectTotals<3>(const Checkpoint&, fluid::FluidSimulation<3>&);
 
+template <int D>
+bool restoreNeighbourLists(const Checkpoint& c, fluid::FluidSimulation<D>& sim) {
+  if (c.r_at_build.empty()) return false;
+  sim.restoreNeighbourLists(unflatten<D>(c.r_at_build), unflatten<D>(c.boundary_r_at_build));
+  return true;
+}
+
+template bool restoreNeighbourLists<2>(const Checkpoint&, fluid::FluidSimulation<2>&);
+template bool restoreNeighbourLists<3>(const Checkpoint&, fluid::FluidSimulation<3>&);
+
 void writeCheckpoint(const std::string& path, const Checkpoint& c) {
   const std::string tmp = path + ".tmp";
   {
@@ -87,6 +120,9 @@ void writeCheckpoint(const std::string& path, const Checkpoint& c) {
     h5::writeDoubles(file, "rho", c.rho, 1, "kg/m^3");
     h5::writeDoubles(file, "m", c.m, 1, "kg");
     h5::writeInt64(file, "id", c.id, "1");
+    if (!c.r_at_build.empty()) h5::writeDoubles(file, "r_at_build", c.r_at_build, c.dim, "m");
+    if (!c.boundary_r_at_build.empty())
+      h5::writeDoubles(file, "boundary_r_at_build", c.boundary_r_at_build, c.dim, "m");
     if (!c.bodies.empty()) h5::writeDoubles(file, "bodies", c.bodies, 1, "SI");
     if (!c.outflow.empty()) h5::writeDoubles(file, "outflow", c.outflow, 1, "particles, kg, J, s");
     if (!c.piston_work.empty()) h5::writeDoubles(file, "piston_work", c.piston_work, 1, "J");
@@ -122,11 +158,15 @@ Checkpoint readCheckpoint(const std::string& path) {
   c.rho = h5::readDoubles(file, "rho");
   c.m = h5::readDoubles(file, "m");
   c.id = h5::readInt64(file, "id");
+  if (H5Lexists(file, "r_at_build", H5P_DEFAULT) > 0) c.r_at_build = h5::readDoubles(file, "r_at_build");
+  if (H5Lexists(file, "boundary_r_at_build", H5P_DEFAULT) > 0)
+    c.boundary_r_at_build = h5::readDoubles(file, "boundary_r_at_build");
   if (H5Lexists(file, "bodies", H5P_DEFAULT) > 0) c.bodies = h5::readDoubles(file, "bodies");
   if (H5Lexists(file, "outflow", H5P_DEFAULT) > 0) c.outflow = h5::readDoubles(file, "outflow");
   if (H5Lexists(file, "piston_work", H5P_DEFAULT) > 0) c.piston_work = h5::readDoubles(file, "piston_work");
   const std::size_t n = c.rho.size();
-  if (c.r.size() != n * c.dim || c.v.size() != n * c.dim || c.m.size() != n || c.id.size() != n)
+  if (c.r.size() != n * c.dim || c.v.size() != n * c.dim || c.m.size() != n || c.id.size() != n ||
+      (!c.r_at_build.empty() && c.r_at_build.size() != n * c.dim) || c.boundary_r_at_build.size() % c.dim != 0)
     throw std::runtime_error(path + ": arrays of inconsistent sizes");
   return c;
 }

@@ -35,15 +35,12 @@ struct RunControl {
   std::function<bool()> checkpoint_due;
   /// Polled before each step: true stops the run after that step, with a checkpoint.
   std::function<bool()> stop_requested;
-  /// Writes a checkpoint; called right after a step that followed a neighbour rebuild.
+  /// Writes a checkpoint; called right after the step (the checkpoint carries the
+  /// positions of the last list build, so no rebuild is needed before it).
   std::function<void()> on_checkpoint;
   /// Index of the next output: output k is at t = k x interval. A fresh run records
   /// output 0 at its start; a restart passes the index saved in its checkpoint.
   long long next_output = 0;
-  /// Rebuild the neighbour lists before every step that reaches an output time or the
-  /// end time, so that a checkpoint written there restarts bit-identically and a
-  /// straight run takes exactly the same steps as a stopped-and-restarted one.
-  bool rebuild_at_outputs = false;
 };
 
 template <int D>

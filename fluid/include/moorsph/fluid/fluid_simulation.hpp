@@ -71,10 +71,13 @@ class FluidSimulation {
   void advanceTo(double t);
 
   /// Rebuild (and re-sort) the neighbour lists at the end of the next step, before the
-  /// rates that start the following step are evaluated. A checkpoint written right after
-  /// such a step restarts bit-identically: a restarted run also builds its lists from
-  /// the saved (sorted) positions before its first evaluation.
+  /// rates that start the following step are evaluated.
   void requestNeighbourRebuild() { rebuild_requested_ = true; }
+  /// A restart's lists: those the checkpointed run had, rebuilt from the positions its
+  /// last rebuild saw (NeighbourSearch::restore), so the restart continues bit-identically
+  /// without the run having rebuilt before its checkpoint. Call after construction with
+  /// the saved particles, before the first step; `boundary_at_build` is empty without walls.
+  void restoreNeighbourLists(const std::vector<Vec<D>>& fluid_at_build, const std::vector<Vec<D>>& boundary_at_build);
   /// Set the clock of a run restored from a checkpoint (the particles were passed to
   /// the constructor in their saved order).
   void restoreClock(double time, std::size_t steps, double last_dt) {

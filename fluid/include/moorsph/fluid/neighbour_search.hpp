@@ -39,6 +39,19 @@ class NeighbourSearch {
   void rebuild(FluidParticles<D>& fluid, const BoundaryParticles<D>* boundary,
                const std::vector<char>& tracked);
 
+  /// Rebuild the lists a run had, from the positions its last rebuild saw (fluidAtBuild()
+  /// and boundaryAtBuild() of that run, saved in a checkpoint), without re-sorting: the
+  /// lists, and with them every later rebuild decision, come out the same as the run's.
+  /// So a run needs no extra rebuild before a checkpoint to restart bit-identically.
+  /// Throws std::invalid_argument if the sizes differ or the fluid is not in the cell
+  /// order of `fluid_at_build` (positions from another run).
+  void restore(const FluidParticles<D>& fluid, const std::vector<Vec<D>>& fluid_at_build,
+               const BoundaryParticles<D>* boundary, const std::vector<Vec<D>>& boundary_at_build,
+               const std::vector<char>& tracked);
+  /// The positions the lists were last built from (empty before the first build).
+  const std::vector<Vec<D>>& fluidAtBuild() const { return fluid_at_build_; }
+  const std::vector<Vec<D>>& boundaryAtBuild() const { return boundary_at_build_; }
+
   const NeighbourList& fluidFluid() const { return fluid_fluid_; }
   const NeighbourList& fluidBoundary() const { return fluid_boundary_; }
   const NeighbourList& boundaryFluid() const { return boundary_fluid_; }
@@ -50,8 +63,11 @@ class NeighbourSearch {
   std::size_t rebuildCount() const { return rebuild_count_; }
 
  private:
+  void countCells(const std::vector<Vec<D>>& r);  // cell_of_ and cell_start_ for r
   void sortFluidByCell(FluidParticles<D>& fluid);
-  void indexBoundary(const BoundaryParticles<D>& boundary);
+  void indexBoundary(const std::vector<Vec<D>>& rb);
+  void buildLists(const std::vector<Vec<D>>& r, const std::vector<Vec<D>>* boundary_r,
+                  const std::vector<char>& tracked);
   template <class Candidates>
   void buildList(std::size_t owners, NeighbourList& list, Candidates&& candidates);
 

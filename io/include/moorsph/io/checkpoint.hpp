@@ -1,15 +1,18 @@
 #pragma once
 // Checkpoints: everything a run needs to continue bit-identically (same thread count).
-// The fluid state arrays are saved in their storage order (sorted by cell after the
-// neighbour rebuild the run requested before the step it checkpoints after), with
-// the clock, the output counters and the resolved scene. The boundary is rebuilt from
-// the scene on restart, so a restart may change what does not alter the particle set
-// (end time, output cadence). Written atomically: to PATH.tmp, then renamed.
+// The fluid state arrays are saved in their storage order (sorted by cell at the last
+// neighbour rebuild), with the positions that rebuild saw, so the restart rebuilds the
+// same lists (NeighbourSearch::restore) and the run needs no extra rebuild before a
+// checkpoint; with the clock, the output counters and the resolved scene. The boundary
+// is rebuilt from the scene on restart, so a restart may change what does not alter the
+// particle set (end time, output cadence). Written atomically: to PATH.tmp, then renamed.
 //
 // File layout (HDF5): attributes dim, time [s], last_dt [s], steps, next_output,
 // next_snapshot, scene (YAML text), reason; datasets r (N,D) [m], v (N,D) [m/s],
-// rho (N) [kg/m^3], m (N) [kg], id (N); with bodies, "bodies": the multibody state
-// (bodies::SystemSnapshot packed into numbers by the app, SI units).
+// rho (N) [kg/m^3], m (N) [kg], id (N); r_at_build (N,D) and boundary_r_at_build
+// (NB,D) [m], the positions of the last list build (absent in checkpoints written before
+// session 35: such a restart builds its lists afresh); with bodies, "bodies": the
+// multibody state (bodies::SystemSnapshot packed into numbers by the app, SI units).
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -28,6 +31,9 @@ struct Checkpoint {
   std::string reason;              ///< "end", "interval", "interrupt", "failure"
   std::vector<double> r, v, rho, m;  ///< r and v hold D values per particle
   std::vector<std::int64_t> id;
+  /// Positions of the last neighbour-list build, D values per particle (fluid; boundary
+  /// particles); empty if the run had not built lists or the file predates them.
+  std::vector<double> r_at_build, boundary_r_at_build;
   std::vector<double> bodies;        ///< packed multibody state; empty without bodies
   /// The outflow's tally (particles, mass, energy, first time); empty when nothing left.
   std::vector<double> outflow;
@@ -48,6 +54,12 @@ fluid::FluidParticles<D> restoreParticles(const Checkpoint& checkpoint);
 /// effect) and the piston's work.
 template <int D>
 void restoreEffectTotals(const Checkpoint& checkpoint, fluid::FluidSimulation<D>& sim);
+
+/// Give a restarted simulation the lists its run had (FluidSimulation::restoreNeighbourLists).
+/// Returns false, changing nothing, for a checkpoint without build positions (the
+/// restart then builds its lists afresh: the same physics, not bit-identical).
+template <int D>
+bool restoreNeighbourLists(const Checkpoint& checkpoint, fluid::FluidSimulation<D>& sim);
 
 /// Write to `path` atomically. Throws std::runtime_error on failure.
 void writeCheckpoint(const std::string& path, const Checkpoint& checkpoint);
