@@ -167,17 +167,22 @@ def threads(run_dir):
     return 0
 
 
+def finished_runs(run_dirs):
+    """(run, scene, probes, wall, steps) for each run that reached its end time."""
+    for run in run_dirs:
+        if not finished(run):
+            print("skipped (the run did not finish: see its log.txt): %s" % run)
+            continue
+        yield (run,) + read_run(run)
+
+
 def report(out, run_dirs):
     ref = load_reference()
     ref_m = measures(ref["t"], ref["median"], ref)
     wr = window(ref["t"], *IMPACT)
     band = (float(ref["p2.5"][wr].max()), float(ref["p97.5"][wr].max()))
     rows, curves = [], []
-    for run in run_dirs:
-        if not finished(run):
-            print("skipped (the run did not finish: see its log.txt): %s" % run)
-            continue
-        scene, probes, wall, steps = read_run(run)
+    for run, scene, probes, wall, steps in finished_runs(run_dirs):
         dx = scene["resolution"]["dx"]
         tag = " + shifting" if "particle_shifting" in scene.get("effects", []) else ""
         width = 4.0 * H / scene["fluid"]["sound_speed"]
@@ -217,11 +222,7 @@ def ensemble(out, run_dirs):
     """Peak and plateau (centred 4 H / c_s means) per member and over the members."""
     ref = load_reference()
     members, curves = [], []
-    for run in run_dirs:
-        if not finished(run):
-            print("skipped (the run did not finish: see its log.txt): %s" % run)
-            continue
-        scene, probes, wall, steps = read_run(run)
+    for run, scene, probes, wall, steps in finished_runs(run_dirs):
         width = 4.0 * H / scene["fluid"]["sound_speed"]
         t = probes["time"] / T
         smooth = {est: centred_mean(probes["time"], probes["P2_" + est] / PSCALE, width) for est in ESTIMATES}
