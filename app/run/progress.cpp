@@ -1,5 +1,7 @@
 #include "progress.hpp"
 
+#include <algorithm>
+
 #include <unistd.h>
 
 #include <cstdio>
@@ -55,6 +57,39 @@ void Progress::update(double time, std::size_t steps, double dt) {
   } else {
     log_.line(describe(time, steps, dt));
   }
+}
+
+namespace {
+
+/// Seconds to three figures without an exponent: "1198", "50.0", "0.344".
+std::string seconds3(double s) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, s >= 100.0 ? "%.0f" : s >= 10.0 ? "%.1f" : s >= 1.0 ? "%.2f" : "%.3f", s);
+  return buffer;
+}
+
+}  // namespace
+
+std::string describePhases(const std::vector<std::string>& names, const std::vector<double>& seconds, double wall) {
+  std::vector<std::size_t> order(names.size());
+  for (std::size_t k = 0; k < order.size(); ++k) order[k] = k;
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return seconds[a] > seconds[b]; });
+  const auto share = [&](double s) { return wall > 0.0 ? 100.0 * s / wall : 0.0; };
+  const auto item = [&](const std::string& name, double s) {
+    char percent[16];
+    std::snprintf(percent, sizeof percent, " (%.0f%%)", share(s));
+    return name + " " + seconds3(s) + " s" + percent;
+  };
+  std::string text = "time by phase (" + seconds3(wall) + " s wall):";
+  double listed = 0.0;
+  const char* separator = " ";
+  for (const std::size_t k : order) {
+    if (share(seconds[k]) < 1.0) break;
+    text += separator + item(names[k], seconds[k]);
+    listed += seconds[k];
+    separator = ", ";
+  }
+  return text + separator + item("other", std::max(0.0, wall - listed));
 }
 
 void Progress::clear() {

@@ -4,6 +4,7 @@
 // a log line every `log_interval` seconds of wall time.
 #include <chrono>
 #include <string>
+#include <vector>
 #include "run_log.hpp"
 
 namespace moorsph::app {
@@ -28,5 +29,11 @@ class Progress {
   bool started_ = false;
   std::chrono::steady_clock::time_point wall_start_, last_print_, last_logged_;
 };
+
+/// Where a run's wall time went, for its last log line: "time by phase (2443 s wall):
+/// pairs 1198 s (49%), neighbours 972 s (40%), ..., other 23 s (1%)". Phases are listed
+/// largest first; those under 1% of the wall time are summed into "other", with the time
+/// no phase counts (output, progress).
+std::string describePhases(const std::vector<std::string>& names, const std::vector<double>& seconds, double wall);
 
 }  // namespace moorsph::app

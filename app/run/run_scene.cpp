@@ -295,8 +295,20 @@ int runDim(const io::SceneConfig& config, const RunOptions& o, const std::string
              "; failure.checkpoint.h5 holds the state at the failure (for inspection, not for restarting)");
     return kRunFailed;
   }
+  const auto logPhases = [&] {
+    std::vector<std::string> names = sim.phaseTimers().names();
+    std::vector<double> seconds = sim.phaseTimers().seconds();
+#if MOORSPH_HAS_BODIES
+    if (co) {
+      names.insert(names.end(), {"body dynamics", "fluid-body exchange"});
+      seconds.insert(seconds.end(), {co->bodySeconds(), co->exchangeSeconds()});
+    }
+#endif
+    log.line("  " + describePhases(names, seconds, summary.wall_seconds));
+  };
   if (recorder.stoppedEarly()) {
     (void)interrupted_checkpoint;
+    logPhases();
     log.line(format("interrupted at t = %.6g s; continue with --restart ", sim.time()) + out + "/checkpoint.h5");
     return kInterrupted;
   }
@@ -305,6 +317,7 @@ int runDim(const io::SceneConfig& config, const RunOptions& o, const std::string
   log.line(format("simulated %.4g s in %.0f steps, %.1f s wall", summary.simulated_time, steps, summary.wall_seconds) +
            format(" (real-time factor %.3g, %.3g particle-steps/s)", (summary.simulated_time - (restarting ? restored.time : 0.0)) / summary.wall_seconds,
                   steps * static_cast<double>(summary.particles) / summary.wall_seconds));
+  logPhases();
   log.line("output: " + fs::absolute(out).string() + " (series.h5" + (particle_file ? ", particles.xmf" : "") +
            ", scene.resolved.yaml, log.txt, checkpoint.h5)");
   return kSuccess;

@@ -68,6 +68,15 @@ TEST(Cli, ProgressLineSaysWhereTheRunIs) {
     EXPECT_NE(line.find(expected), std::string::npos) << expected << " in " << line;
 }
 
+TEST(Cli, PhaseLineListsTheLargestPhasesFirstAndTheRestAsOther) {
+  // 200 s of wall: pairs 120 s (60%), neighbours 50 s (25%), walls 20 s (10%), checks 1 s
+  // (0.5%, into "other"), leaving 200 - 190 = 10 s (5%) as "other".
+  const std::string line = moorsph::app::describePhases({"neighbours", "walls", "pairs", "checks"}, {50.0, 20.0, 120.0, 1.0}, 200.0);
+  EXPECT_EQ(line, "time by phase (200 s wall): pairs 120 s (60%), neighbours 50.0 s (25%), walls 20.0 s (10%), other 10.0 s (5%)");
+  // Timers that overrun the wall (a restart counts its list restore before the run) leave no negative rest.
+  EXPECT_EQ(moorsph::app::describePhases({"pairs"}, {12.0}, 10.0), "time by phase (10.0 s wall): pairs 12.0 s (120%), other 0.000 s (0%)");
+}
+
 TEST(Cli, PlotWritesPngPerSeries) {
   if (std::system("/usr/bin/python3 -c 'import h5py, matplotlib' > /dev/null 2>&1") != 0)
     GTEST_SKIP() << "/usr/bin/python3 lacks h5py or matplotlib (python3-h5py, python3-matplotlib)";
