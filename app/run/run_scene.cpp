@@ -219,8 +219,9 @@ int runDim(const io::SceneConfig& config, const RunOptions& o, const std::string
              o.restart + ")");
     for (const std::string& note : changedLineModels(restored.scene_yaml, resolved)) log.line("  note: " + note);
     if (!lists_restored)
-      log.line("  note: the checkpoint predates saved neighbour-list positions: the lists are built afresh, so "
-               "the run continues with the same physics but not bit-identically");
+      log.line("  note: the checkpoint has no neighbour-list positions that fit this run (written before they were "
+               "saved, or h or the skin changed): the lists are built afresh, so the run continues with the same "
+               "physics but not bit-identically");
   }
 
   io::SeriesFile series(out + "/series.h5");

@@ -97,7 +97,13 @@ template void restoreEffectTotals<3>(const Checkpoint&, fluid::FluidSimulation<3
 template <int D>
 bool restoreNeighbourLists(const Checkpoint& c, fluid::FluidSimulation<D>& sim) {
   if (c.r_at_build.empty()) return false;
-  sim.restoreNeighbourLists(unflatten<D>(c.r_at_build), unflatten<D>(c.boundary_r_at_build));
+  try {
+    sim.restoreNeighbourLists(unflatten<D>(c.r_at_build), unflatten<D>(c.boundary_r_at_build));
+  } catch (const std::invalid_argument&) {
+    // The saved positions do not fit this run's lists (a changed smoothing length or
+    // skin gives other cells): its first step builds them afresh.
+    return false;
+  }
   return true;
 }
 

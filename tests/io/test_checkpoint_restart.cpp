@@ -9,6 +9,7 @@
 #include <csignal>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <string>
 #include <moorsph/io/checkpoint.hpp>
 #include <moorsph/io/series_history.hpp>
@@ -218,6 +219,15 @@ TEST(Checkpoint, RestartRejectsAnotherGeometry) {
   allowed.sets = {"output.interval=0.005", "method.cfl=0.4"};
   EXPECT_EQ(app::runScene(allowed), app::kSuccess);
   EXPECT_TRUE(std::filesystem::exists(dir + "/first.restart/checkpoint.h5"));  // the default directory
+  // A changed skin gives other cells: the saved list positions do not fit, and the
+  // restart builds its lists afresh instead of stopping.
+  app::RunOptions reskinned = options(scene, dir + "/reskinned", 0.04);
+  reskinned.restart = dir + "/first/checkpoint.h5";
+  reskinned.sets = {"method.skin_factor=0.4"};
+  EXPECT_EQ(app::runScene(reskinned), app::kSuccess);
+  std::ifstream log(dir + "/reskinned/log.txt");
+  const std::string text((std::istreambuf_iterator<char>(log)), std::istreambuf_iterator<char>());
+  EXPECT_NE(text.find("lists are built afresh"), std::string::npos);
 }
 
 TEST(Checkpoint, RestartAfterOutflowKeepsTheTallyAndLeavesTheRemovedOut) {

@@ -56,8 +56,9 @@ template <int D>
 void restoreEffectTotals(const Checkpoint& checkpoint, fluid::FluidSimulation<D>& sim);
 
 /// Give a restarted simulation the lists its run had (FluidSimulation::restoreNeighbourLists).
-/// Returns false, changing nothing, for a checkpoint without build positions (the
-/// restart then builds its lists afresh: the same physics, not bit-identical).
+/// Returns false for a checkpoint without build positions, or with positions that do not
+/// fit (the restart changed the smoothing length or the skin, and with them the cells);
+/// the restart then builds its lists afresh: the same physics, not bit-identical.
 template <int D>
 bool restoreNeighbourLists(const Checkpoint& checkpoint, fluid::FluidSimulation<D>& sim);
 
