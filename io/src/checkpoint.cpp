@@ -9,6 +9,7 @@ namespace moorsph::io {
 
 namespace {
 
+// D values per particle, one particle after another: the layout of the (N, D) datasets.
 template <int D>
 std::vector<double> flatten(const std::vector<fluid::Vec<D>>& r) {
   std::vector<double> out;
@@ -36,13 +37,8 @@ Checkpoint captureCheckpoint(const fluid::FluidSimulation<D>& sim) {
   c.time = sim.time();
   c.last_dt = sim.lastDt();
   c.steps = static_cast<std::int64_t>(sim.stepCount());
-  c.r.reserve(D * f.size());
-  c.v.reserve(D * f.size());
-  for (std::size_t i = 0; i < f.size(); ++i)
-    for (int d = 0; d < D; ++d) {
-      c.r.push_back(f.r[i][d]);
-      c.v.push_back(f.v[i][d]);
-    }
+  c.r = flatten<D>(f.r);
+  c.v = flatten<D>(f.v);
   c.rho = f.rho;
   c.m = f.m;
   c.id = f.id;
@@ -73,14 +69,8 @@ template <int D>
 fluid::FluidParticles<D> restoreParticles(const Checkpoint& c) {
   if (c.dim != D) throw std::runtime_error("checkpoint is " + std::to_string(c.dim) + "D, the scene " + std::to_string(D) + "D");
   fluid::FluidParticles<D> f;
-  const std::size_t n = c.size();
-  f.r.resize(n);
-  f.v.resize(n);
-  for (std::size_t i = 0; i < n; ++i)
-    for (int d = 0; d < D; ++d) {
-      f.r[i][d] = c.r[D * i + d];
-      f.v[i][d] = c.v[D * i + d];
-    }
+  f.r = unflatten<D>(c.r);
+  f.v = unflatten<D>(c.v);
   f.rho = c.rho;
   f.m = c.m;
   f.id = c.id;
