@@ -138,33 +138,20 @@ def finished(run_dir):
         return False
 
 
-def fluid_particles(run_dir):
-    """From the run's log line "2D scene '..': N fluid, M boundary particles"."""
+def scene_counts(run_dir):
+    """(fluid particles, threads) from the run's log line
+    "2D scene '..': N fluid, M boundary particles, K threads"; 0 where absent."""
+    found = {}
     try:
         with open(os.path.join(run_dir, "log.txt")) as f:
             for line in f:
                 words = line.replace(",", " ").split()
-                for k in range(len(words) - 1):
-                    if words[k].isdigit() and words[k + 1] == "fluid":
-                        return int(words[k])
+                for count, noun in zip(words, words[1:]):
+                    if count.isdigit() and noun in ("fluid", "threads"):
+                        found.setdefault(noun, int(count))
     except OSError:
         pass
-    return 0
-
-
-def threads(run_dir):
-    """From the run's log line "2D scene '..': N fluid, M boundary particles, K threads"."""
-    try:
-        with open(os.path.join(run_dir, "log.txt")) as f:
-            for line in f:
-                words = line.replace(",", " ").split()
-                if "threads" in words[1:]:
-                    k = words.index("threads")
-                    if words[k - 1].isdigit():
-                        return int(words[k - 1])
-    except OSError:
-        pass
-    return 0
+    return found.get("fluid", 0), found.get("threads", 0)
 
 
 def finished_runs(run_dirs):
@@ -193,7 +180,7 @@ def report(out, run_dirs):
             smooth[est] = centred_mean(probes["time"], raw, width)
             for label, series, against in (("raw", raw, ref), ("mean %.0f ms" % (1e3 * width), smooth[est],
                                                                      smoothed_reference(ref, width))):
-                rows.append((dx, fluid_particles(run), steps, wall, est + ", " + label + tag, measures(t, series, against),
+                rows.append((dx, scene_counts(run)[0], steps, wall, est + ", " + label + tag, measures(t, series, against),
                              measures(against["t"], against["median"], against)))
         curves.append((dx, t, smooth["interpolated"], smooth["reaction"], width, tag))
     lines = [
@@ -229,7 +216,7 @@ def ensemble(out, run_dirs):
         m = {est: measures(t, smooth[est], smoothed_reference(ref, width)) for est in ESTIMATES}
         method = scene.get("method", {})
         label = "%s, CFL %g, %d thread(s)" % (method.get("integrator", "predictor_corrector"), method.get("cfl", 0.5),
-                                              threads(run))
+                                              scene_counts(run)[1])
         members.append((os.path.basename(os.path.normpath(run)), label, steps, wall, m))
         curves.append((scene["resolution"]["dx"], t, smooth["interpolated"], smooth["reaction"], width, " " + label))
     if not members:

@@ -15,10 +15,10 @@ import sys
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from compare_variants import LINES  # noqa: E402
 from plot_ship_run import stitch  # noqa: E402
 
 GAUGES = ["G150", "G200_side", "G470"]
-LINES = ["line_fore", "line_aft_port", "line_aft_starboard"]
 
 
 def window_mean(cols, column, t0, t1):
