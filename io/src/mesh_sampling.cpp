@@ -1,13 +1,17 @@
 #include <moorsph/io/mesh_sampling.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <map>
 #include <stdexcept>
 #include <unordered_map>
 #include <vector>
 
 namespace moorsph::io {
 namespace {
+
+constexpr double kSameGroupCos = 0.86602540378443865;  // cos 30 deg: normals within it share a group
 
 /// Points with their groups of normals, found by a hash grid of cell `cell`.
 class PointSet {
@@ -48,9 +52,8 @@ class PointSet {
   /// Join `normal` to the group within 30 degrees, or start a new group (a sharp edge).
   void addNormal(int k, const Eigen::Vector3d& normal) {
     auto& groups = groups_[k];
-    const double cos30 = std::cos(M_PI / 6.0);
     for (auto& g : groups)
-      if (g.normalized().dot(normal) > cos30) {
+      if (g.normalized().dot(normal) > kSameGroupCos) {
         g += normal;
         return;
       }
@@ -89,7 +92,51 @@ constexpr double kMergeFraction = 0.25;
 
 int steps(double length, double spacing) { return std::max(1, static_cast<int>(std::ceil(length / spacing - 1e-9))); }
 
+Eigen::Vector3d faceNormal(const TriangleMesh& mesh, const std::array<int, 3>& t) {
+  return (mesh.vertices[t[1]] - mesh.vertices[t[0]]).cross(mesh.vertices[t[2]] - mesh.vertices[t[0]]);
+}
+
+/// Ends of sharp edges where three or more groups of face normals (normals within 30
+/// degrees of each other form a group) meet: a box's corners, a transom's ends at the
+/// deck. Each comes with the normals of the edges that meet there.
+std::vector<std::pair<Eigen::Vector3d, std::vector<Eigen::Vector3d>>> corners(const std::vector<SharpEdge>& edges) {
+  std::map<std::array<double, 3>, std::vector<Eigen::Vector3d>> at;
+  for (const auto& e : edges)
+    for (const Eigen::Vector3d& end : {e.a, e.b}) {
+      auto& normals = at[{end.x(), end.y(), end.z()}];
+      normals.push_back(e.n1);
+      normals.push_back(e.n2);
+    }
+  std::vector<std::pair<Eigen::Vector3d, std::vector<Eigen::Vector3d>>> out;
+  for (const auto& [p, normals] : at) {
+    std::vector<Eigen::Vector3d> groups;
+    for (const auto& n : normals)
+      if (std::none_of(groups.begin(), groups.end(), [&n](const Eigen::Vector3d& g) { return g.dot(n) > kSameGroupCos; }))
+        groups.push_back(n);
+    if (groups.size() >= 3) out.emplace_back(Eigen::Vector3d(p[0], p[1], p[2]), normals);
+  }
+  return out;
+}
+
 }  // namespace
+
+std::vector<SharpEdge> sharpEdges(const TriangleMesh& mesh) {
+  std::map<std::pair<int, int>, std::vector<int>> faces_of_edge;
+  for (std::size_t f = 0; f < mesh.triangles.size(); ++f)
+    for (int k = 0; k < 3; ++k) {
+      const int u = mesh.triangles[f][k], v = mesh.triangles[f][(k + 1) % 3];
+      faces_of_edge[{std::min(u, v), std::max(u, v)}].push_back(static_cast<int>(f));
+    }
+  std::vector<SharpEdge> edges;
+  for (const auto& [ends, faces] : faces_of_edge) {
+    if (faces.size() != 2) continue;
+    const Eigen::Vector3d n1 = faceNormal(mesh, mesh.triangles[faces[0]]), n2 = faceNormal(mesh, mesh.triangles[faces[1]]);
+    if (n1.norm() == 0.0 || n2.norm() == 0.0) continue;  // degenerate triangle: no normal
+    if (n1.normalized().dot(n2.normalized()) > kSameGroupCos) continue;
+    edges.push_back({mesh.vertices[ends.first], mesh.vertices[ends.second], n1.normalized(), n2.normalized()});
+  }
+  return edges;
+}
 
 fluid::BoundaryParticles<3> sampleMeshSurface(const TriangleMesh& mesh, double spacing, fluid::NormalSide side) {
   if (!(spacing > 0.0)) throw std::invalid_argument("mesh sampling: spacing must be positive");
@@ -105,7 +152,22 @@ fluid::BoundaryParticles<3> sampleMeshSurface(const TriangleMesh& mesh, double s
     if (near < 0) set.add(q, normal);
     else if ((set.point(near) - q).norm() < merge) set.addNormal(near, normal);
   };
-  // Candidates in three passes: vertices, the coarse lattices (steps <= spacing; a box
+  // Sharp edges first, each point with both faces' normals (mesh_sampling.hpp), and
+  // before them the corners where they meet, so that an edge's end is not taken by a
+  // particle of the other edge without this edge's normals.
+  const auto edges = sharpEdges(mesh);
+  for (const auto& [corner, normals] : corners(edges))
+    for (const auto& n : normals) offer(corner, n);
+  for (const double fraction : {1.0, 0.5, 0.25})
+    for (const auto& e : edges) {
+      const int n = steps((e.b - e.a).norm(), fraction * spacing);
+      for (int k = 0; k <= n; ++k) {
+        const Eigen::Vector3d q = e.a + (static_cast<double>(k) / n) * (e.b - e.a);
+        offer(q, e.n1);
+        offer(q, e.n2);
+      }
+    }
+  // Then candidates in three passes: vertices, the coarse lattices (steps <= spacing; a box
   // gives exactly its lattice), then fine lattices (steps <= spacing/2) that fill what
   // the coarse ones leave between differently shaped or small triangles.
   // Each lattice pass completes before the longest edges are offered, so an edge

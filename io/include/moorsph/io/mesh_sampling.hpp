@@ -4,7 +4,8 @@
 //
 // The wall force of METHOD.md grows with the number of boundary particles per area, so
 // the sampling aims at one particle per spacing^2 whatever the mesh's triangle sizes:
-// candidate points are offered in order (every vertex; each triangle's lattice spanned
+// candidate points are offered in order (points along the sharp edges, below; every
+// vertex; each triangle's lattice spanned
 // by its two shorter edges, divided into the fewest equal steps not longer than
 // `spacing`; then the same lattices at half that step) and a candidate is kept only if
 // no kept particle lies within 0.75 spacing. A box split into triangles thus gives
@@ -17,6 +18,17 @@
 // group of face normals within 30 degrees of each other, so flat and smooth parts carry
 // one (averaged) normal, sharp edges two and corners three, as box edges and corners do.
 //
+// Sharp edges are sampled first, each point with both faces' normals, at the fewest
+// equal steps not longer than spacing, then spacing/2 and spacing/4: no point of a sharp
+// edge is then farther than 0.875 spacing from a particle with both normals. Without
+// this pass an edge got such particles only where a vertex or lattice point of both
+// faces happened to fall on it: a face's interior vertex near the edge could take its
+// place, leaving a strip along the edge covered by one face's particles only. The wall
+// force law drops those particles' push on fluid beyond the edge (boundary_force_law.hpp,
+// "Beyond an edge"), so fluid there met no wall: in the ship at dx = 6 m a particle
+// slid along the transom onto its lower edge unopposed and was thrown off at 216 m/s
+// when the push switched back on (docs/validation/ship.md).
+//
 // The normals point out of the enclosed volume (an obstacle or a body in the fluid)
 // or into it (a container), whatever the file's winding: it is made consistent with
 // the sign of the enclosed volume, so the mesh must be closed.
@@ -24,6 +36,17 @@
 #include <moorsph/io/triangle_mesh.hpp>
 
 namespace moorsph::io {
+
+/// An edge of the mesh whose two triangles' normals differ by more than 30 degrees
+/// (the angle within which sampled particles merge normals): ends a, b and the two
+/// triangles' unit normals as wound (outward for a positive volume).
+struct SharpEdge {
+  Eigen::Vector3d a, b, n1, n2;
+};
+
+/// The sharp edges of a mesh whose vertices are shared (readMesh welds them); edges
+/// with one or more than two triangles are left out.
+std::vector<SharpEdge> sharpEdges(const TriangleMesh& mesh);
 
 fluid::BoundaryParticles<3> sampleMeshSurface(const TriangleMesh& mesh, double spacing, fluid::NormalSide side);
 
