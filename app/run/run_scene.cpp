@@ -220,8 +220,8 @@ int runDim(const io::SceneConfig& config, const RunOptions& o, const std::string
     for (const std::string& note : changedLineModels(restored.scene_yaml, resolved)) log.line("  note: " + note);
     if (!lists_restored)
       log.line("  note: the checkpoint has no neighbour-list positions that fit this run (written before they were "
-               "saved, or h or the skin changed): the lists are built afresh, so the run continues with the same "
-               "physics but not bit-identically");
+               "saved, or h, the skin or the number of boundary particles changed, e.g. a body surface sampled by "
+               "another version): the lists are built afresh, so the run does not continue bit-identically");
   }
 
   io::SeriesFile series(out + "/series.h5");
