@@ -91,7 +91,7 @@ bool restoreNeighbourLists(const Checkpoint& c, fluid::FluidSimulation<D>& sim) 
     sim.restoreNeighbourLists(unflatten<D>(c.r_at_build), unflatten<D>(c.boundary_r_at_build));
   } catch (const std::invalid_argument&) {
     // The saved positions do not fit this run's lists (a changed smoothing length or
-    // skin gives other cells): its first step builds them afresh.
+    // skin gives other cells; a changed boundary count): its first step builds them afresh.
     return false;
   }
   return true;

@@ -57,8 +57,9 @@ void restoreEffectTotals(const Checkpoint& checkpoint, fluid::FluidSimulation<D>
 
 /// Give a restarted simulation the lists its run had (FluidSimulation::restoreNeighbourLists).
 /// Returns false for a checkpoint without build positions, or with positions that do not
-/// fit (the restart changed the smoothing length or the skin, and with them the cells);
-/// the restart then builds its lists afresh: the same physics, not bit-identical.
+/// fit (the restart changed the smoothing length or the skin, and with them the cells, or
+/// the number of boundary particles, e.g. a body sampled by another version); the restart
+/// then builds its lists afresh and does not continue bit-identically.
 template <int D>
 bool restoreNeighbourLists(const Checkpoint& checkpoint, fluid::FluidSimulation<D>& sim);
 
