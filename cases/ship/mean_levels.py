@@ -3,9 +3,11 @@
 
     python3 mean_levels.py --windows 20-30,60-100,230-265 NAME=RUN_DIR[,RUN_DIR...] [NAME=...]
 
-How docs/validation/ship.md measures the gauges' mean fall as the sea builds (a numerical
-loss of water that shrinks with dx): the mean of each gauge (150 m, the focus at 200 m,
-470 m), of the CoM height and of each fairlead tension over each window. RUN_DIRs are the
+How docs/validation/ship.md measures the gauges' mean fall as the sea builds: the mean of
+each gauge (150 m, the focus at 200 m, 470 m), of the CoM height and of each fairlead
+tension over each window. The water's volume does not change (sum m/rho is constant to
+1e-5); a fall of the gauges is the particles packing closer than their densities say
+(ship.md finding 6, session 37). RUN_DIRs are the
 segments of one run, stitched as plot_ship_run.py does. Tested by
 tests/cases/ship/test_compare_variants.py.
 """
