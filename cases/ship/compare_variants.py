@@ -24,13 +24,22 @@ HANGING = 0.5e6  # [N]: a fairlead tension below this counts as a hanging (slack
 DESIGN_COM_Y = 132.48  # [m]: the CoM height at the design pose (ship_base.yaml, docs/validation/ship.md)
 
 
-def window(series, t0, t1):
-    """The stitched series cut to t0 <= t <= t1."""
+def window(series, t0, t1, name="run"):
+    """The stitched series cut to t0 <= t <= t1. A run whose cable series do not cover the
+    window past its first second (a segment missing, or a run that stopped early) has no
+    fastest rise or peak to report: SystemExit naming the run and where its series end."""
     out = {}
     for g, cols in series.items():
         t = cols["time"]
         keep = (t >= t0) & (t <= t1)
         out[g] = {c: v[keep] for c, v in cols.items()}
+    for line in LINES:
+        t = out[line]["time"]
+        if t.size < 3 or t[-1] < t[0] + 1.0 + 1e-9:
+            full = series[line]["time"]
+            span = f"{full[0]:.2f}-{full[-1]:.2f} s" if full.size else "no rows"
+            sys.exit(f"compare_variants.py: {name}: its {line} series cover {span}, "
+                     f"not the window {t0:g}-{t1:g} s past its first second; give all of the run's segments")
     return out
 
 
@@ -130,7 +139,7 @@ def main():
             sys.exit(f"compare_variants.py: '{arg}' is not NAME=RUN_DIR[,RUN_DIR...]")
         name, dirs = arg.split("=", 1)
         names.append(name)
-        windows.append(window(stitch(dirs.split(",")), t0, t1))
+        windows.append(window(stitch(dirs.split(",")), t0, t1, name))
     table(names, [rows(s) for s in windows])
     plot(names, windows, png)
 

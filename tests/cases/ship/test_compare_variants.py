@@ -94,6 +94,19 @@ with tempfile.TemporaryDirectory() as d:
     check("windows", ml.parse_windows("20-30,60-100"), [(20.0, 30.0), (60.0, 100.0)])
     check("an empty window", np.isnan(ml.levels(s, 30.0, 40.0)["CoM"]), True)
 
+    # A run that stops inside the window (here at 20 s, window to 40 s) still compares;
+    # one whose series end before the window's first second says so instead of failing
+    # deep inside numpy.
+    # T is 5 MN at 15 s, falls to 0 at 17.5 s and rises back to 5 MN at 20 s.
+    check("a run that stops inside the window", cv.rows(cv.window(s, 15.0, 40.0))["fore: tension range [MN]"],
+          "0.0-5.0 (peak 15.0 s)")
+    try:
+        cv.window(s, 19.5, 40.0, "short")
+        failures.append("a window past the run's end: no error")
+    except SystemExit as e:
+        check("a window past the run's end names the run and its span",
+              "short: its line_fore series cover 0.00-20.00 s" in str(e), True)
+
 if failures:
     print("\n".join(failures))
     sys.exit(1)
