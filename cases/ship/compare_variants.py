@@ -24,6 +24,12 @@ HANGING = 0.5e6  # [N]: a fairlead tension below this counts as a hanging (slack
 DESIGN_COM_Y = 132.48  # [m]: the CoM height at the design pose (ship_base.yaml, docs/validation/ship.md)
 
 
+def past_first_second(time):
+    """The samples after a window's first second: a restart variant's changed line steps
+    in that second, so the fastest rise is looked for after it."""
+    return time >= time[0] + 1.0
+
+
 def window(series, t0, t1, name="run"):
     """The stitched series cut to t0 <= t <= t1. A run whose cable series do not cover the
     window past its first second (a segment missing, or a run that stopped early) has no
@@ -35,7 +41,7 @@ def window(series, t0, t1, name="run"):
         out[g] = {c: v[keep] for c, v in cols.items()}
     for line in LINES:
         t = out[line]["time"]
-        if t.size == 0 or (t >= t[0] + 1.0).sum() < 2:  # rows() needs two samples past the first second
+        if t.size == 0 or past_first_second(t).sum() < 2:  # rows() needs two of them for a rise
             full = series[line]["time"]
             span = f"{full[0]:.2f}-{full[-1]:.2f} s" if full.size else "no rows"
             sys.exit(f"compare_variants.py: {name}: its {line} series cover {span}, "
@@ -72,8 +78,7 @@ def rows(s):
         # and rarely raise the flag: the time below HANGING reads alike for every model.
         hanging = spells(L["time"], L["fairlead_tension"] < HANGING)
         r[f"{line[5:]}: below {HANGING / 1e6:g} MN [s]"] = ", ".join(f"{a:.1f}-{b:.1f}" for a, b in hanging) or "never"
-        # Skips the window's first second: a restart variant's changed line steps there.
-        late = L["time"] >= L["time"][0] + 1.0
+        late = past_first_second(L["time"])
         rise = np.diff(L["fairlead_tension"][late]) / np.diff(L["time"][late])
         k = np.argmax(rise)
         r[f"{line[5:]}: fastest rise [MN/s]"] = f"{rise[k] / 1e6:.1f} ({L['time'][late][k]:.1f} s)"
