@@ -63,8 +63,8 @@ int checkDim(const io::SceneConfig& c) {
   std::string effects;
   for (const auto& e : sim.effectNames()) effects += " " + e;
   std::printf("  effects:%s (method %s)\n", effects.c_str(), c.method.name.c_str());
-  std::printf("  sensors: %zu wave gauges, %zu pressure probes, %zu velocity probes\n", c.gauges.size(), c.probes.size(),
-              c.velocity_probes.size());
+  std::printf("  sensors: %zu wave gauges, %zu pressure probes, %zu velocity probes, %zu packing probes\n", c.gauges.size(),
+              c.probes.size(), c.velocity_probes.size(), c.packing_probes.size());
   for (std::size_t k = 0; k < built.body_surfaces.size(); ++k) {
     std::size_t n = 0;
     for (auto s : sim.walls()->particles().surface) n += s == built.body_surfaces[k] ? 1 : 0;

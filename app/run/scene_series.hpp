@@ -2,7 +2,9 @@
 // The time series a scene's sensors add to series.h5: /gauges (one column per wave
 // gauge: free-surface height y [m]) and /probes (per pressure probe, the pressure
 // from the wall reactions and the SPH-interpolated one [Pa]), /velocity_probes (per
-// velocity probe its components vx, vy (, vz) [m/s], NaN while the point is dry) and
+// velocity probe its components vx, vy (, vz) [m/s], NaN while the point is dry),
+// /packing_probes (per packing probe the mean and spread of xi over its box's wet points
+// and their fraction [-]) and
 // /outflow (spray removed by the outflow effect: count, mass, energy carried out),
 // /piston (the plate's displacement, velocity, the fluid's force on it and the work it
 // has done on the water).
@@ -35,6 +37,8 @@ class SceneSeries {
     probe_names_ = built.probe_names;
     for (const auto& v : built.velocity_probes) velocity_probes_.emplace_back(v);
     velocity_probe_names_ = built.velocity_probe_names;
+    for (const auto& p : built.packing_probes) packing_probes_.emplace_back(p);
+    packing_probe_names_ = built.packing_probe_names;
     for (std::size_t k = 0; k < built.probes.size(); ++k) {
       const double window = k < built.probe_means.size() ? built.probe_means[k] : 0.0;
       means_.push_back({MovingMean(window), MovingMean(window), window > 0.0});
@@ -122,9 +126,32 @@ class SceneSeries {
                          "velocity probes: SPH-interpolated (Shepard) fluid velocity at a fixed point; NaN where the "
                          "particle density there is below min_fill (dry)");
     }
+    if (!packing_probes_.empty()) attachPacking(recorder);
   }
 
  private:
+  void attachPacking(cases::RunRecorder<D>& recorder) {
+    std::vector<io::SeriesColumn> columns;
+    for (const auto& n : packing_probe_names_) {
+      columns.push_back({n + "_xi_mean", "1"});
+      columns.push_back({n + "_xi_spread", "1"});
+      columns.push_back({n + "_wet_fraction", "1"});
+    }
+    recorder.addSeries("packing_probes", columns,
+                       [this](const fluid::FluidSimulation<D>& s) {
+                         std::vector<double> v;
+                         for (const auto& p : packing_probes_) {
+                           const fluid::PackingReading r = p.read(s);
+                           v.insert(v.end(), {r.mean, r.spread, r.wet_fraction});
+                         }
+                         return v;
+                       },
+                       "packing probes: mean and standard deviation of the particle density xi = sum_j (m_j/rho_j) W "
+                       "over the box's grid points with xi >= min_fill, and their fraction of the points; a mean rising "
+                       "above its start value means the particles pack closer than their densities say (the particle "
+                       "surface then stands lower than the water's volume by about depth x the rise)");
+  }
+
   std::vector<std::string> names_;
   const fluid::Piston<D>* piston_;
   const fluid::Outflow<D>* outflow_;
@@ -134,6 +161,8 @@ class SceneSeries {
   std::vector<fluid::PressureProbe<D>> probes_;
   std::vector<std::string> velocity_probe_names_;
   std::vector<fluid::VelocityProbe<D>> velocity_probes_;
+  std::vector<std::string> packing_probe_names_;
+  std::vector<fluid::PackingProbe<D>> packing_probes_;
   struct Means {
     MovingMean reaction, interpolated;
     bool on;

@@ -282,6 +282,31 @@ void readVelocityProbes(MapReader& top, SceneConfig& c) {
   }
 }
 
+// A box of grid points; the grid spacing defaults to 0.618 dx (the reader's c.dx is set by now).
+void readPackingProbes(MapReader& top, SceneConfig& c) {
+  const YAML::Node probes = top.child("packing_probes");
+  if (!probes.IsDefined() || probes.IsNull()) return;
+  if (!probes.IsSequence()) top.fail("packing_probes", "expected a list of probes, got " + describeNode(probes));
+  for (std::size_t i = 0; i < probes.size(); ++i) {
+    MapReader m(probes[i], "packing_probes[" + std::to_string(i) + "]", top.source());
+    PackingProbeConfig p;
+    p.name = m.text("name", "P" + std::to_string(i + 1));
+    p.lower = toTriple(m.vector("lower", c.dim));
+    p.upper = toTriple(m.vector("upper", c.dim));
+    for (int a = 0; a < c.dim; ++a)
+      if (!(p.upper[a] > p.lower[a])) m.fail("upper", "each coordinate must exceed lower's");
+    p.spacing = m.number("spacing", p.spacing);
+    if (p.spacing < 0.0) m.fail("spacing", "expected a grid spacing > 0 [m] (or 0 for 0.618 dx)");
+    double points = 1.0;
+    for (int a = 0; a < c.dim; ++a) points *= (p.upper[a] - p.lower[a]) / (p.spacing > 0.0 ? p.spacing : 0.618 * c.dx);
+    if (points > 1e7) m.fail("spacing", "the box holds more than 1e7 grid points; give a larger spacing");
+    p.min_fill = m.number("min_fill", p.min_fill);
+    if (!(p.min_fill > 0.0 && p.min_fill < 1.0)) m.fail("min_fill", "expected a particle density in (0, 1) [-]");
+    m.finish();
+    c.packing_probes.push_back(p);
+  }
+}
+
 void readSensors(MapReader& top, SceneConfig& c) {
   const YamlSource& src = top.source();
   const YAML::Node gauges = top.child("gauges");
@@ -355,6 +380,7 @@ void readSensors(MapReader& top, SceneConfig& c) {
     }
   }
   readVelocityProbes(top, c);
+  readPackingProbes(top, c);
 }
 
 }  // namespace moorsph::io::detail

@@ -204,6 +204,17 @@ std::string resolvedSceneYaml(const SceneConfig& c) {
     }
     e << YAML::EndSeq;
   }
+  if (!c.packing_probes.empty()) {
+    e << YAML::Key << "packing_probes" << YAML::Value << YAML::BeginSeq;
+    for (const auto& p : c.packing_probes) {
+      e << YAML::BeginMap << YAML::Key << "name" << YAML::Value << p.name;
+      vec(e, "lower", p.lower, c.dim);
+      vec(e, "upper", p.upper, c.dim);
+      e << YAML::Key << "spacing" << YAML::Value << p.spacing;
+      e << YAML::Key << "min_fill" << YAML::Value << p.min_fill << YAML::EndMap;
+    }
+    e << YAML::EndSeq;
+  }
   detail::writeBodySections(e, c);
   e << YAML::Key << "output" << YAML::Value << YAML::BeginMap;
   e << YAML::Key << "interval" << YAML::Value << c.output.interval;

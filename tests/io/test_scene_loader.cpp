@@ -548,6 +548,35 @@ TEST(SceneLoader, VelocityProbes) {
       << outside;
 }
 
+// Packing probes: read with their defaults (spacing 0 = 0.618 dx at build), built into specs,
+// written back; a box with upper below lower, a negative spacing or too many grid points
+// names the key and its line.
+TEST(SceneLoader, PackingProbes) {
+  const std::string probes =
+      "packing_probes:\n  - {name: bulk, lower: [0.02, 0.02], upper: [0.18, 0.1]}\n"
+      "  - {lower: [0.0, 0.0], upper: [0.2, 0.2], spacing: 0.005, min_fill: 0.7}\n";
+  const auto c = io::loadSceneText(std::string(kBase) + probes, "s.yaml");
+  ASSERT_EQ(c.packing_probes.size(), 2u);
+  EXPECT_EQ(c.packing_probes[1].name, "P2");
+  EXPECT_DOUBLE_EQ(c.packing_probes[0].spacing, 0.0);
+  EXPECT_DOUBLE_EQ(c.packing_probes[1].min_fill, 0.7);
+  const auto built = io::buildScene<2>(c);
+  ASSERT_EQ(built.packing_probes.size(), 2u);
+  EXPECT_EQ(built.packing_probe_names[0], "bulk");
+  EXPECT_DOUBLE_EQ(built.packing_probes[0].spacing, 0.618 * c.dx);
+  EXPECT_DOUBLE_EQ(built.packing_probes[1].upper[1], 0.2);
+  EXPECT_EQ(io::resolvedSceneYaml(io::loadSceneText(io::resolvedSceneYaml(c), "r.yaml")), io::resolvedSceneYaml(c));
+  const std::string upside = errorOf(std::string(kBase) + "packing_probes:\n  - {lower: [0.1, 0.1], upper: [0.2, 0.05]}\n");
+  EXPECT_NE(upside.find("'packing_probes[0].upper': each coordinate must exceed lower's"), std::string::npos) << upside;
+  EXPECT_NE(upside.find("s.yaml:11:"), std::string::npos) << upside;
+  const std::string spacing =
+      errorOf(std::string(kBase) + "packing_probes:\n  - {lower: [0, 0], upper: [0.2, 0.2], spacing: -1}\n");
+  EXPECT_NE(spacing.find("'packing_probes[0].spacing'"), std::string::npos) << spacing;
+  const std::string many =
+      errorOf(std::string(kBase) + "packing_probes:\n  - {lower: [0, 0], upper: [0.2, 0.2], spacing: 1e-5}\n");
+  EXPECT_NE(many.find("more than 1e7 grid points"), std::string::npos) << many;
+}
+
 // A water block fills whole spacings: one whose size is not a multiple of dx stops short
 // of its upper face, and the built scene says where (check and run print it); a block of
 // whole spacings gets no note. Here 0.2 m at dx = 0.015 m is 13.33 spacings: 13 layers,

@@ -8,6 +8,7 @@
 #include <moorsph/fluid/fluid_simulation.hpp>
 #include <moorsph/fluid/pressure_probe.hpp>
 #include <moorsph/fluid/tank_scene.hpp>
+#include <moorsph/fluid/packing_probe.hpp>
 #include <moorsph/fluid/velocity_probe.hpp>
 #include <moorsph/fluid/wave_gauge.hpp>
 #include <moorsph/io/scene_config.hpp>
@@ -24,6 +25,8 @@ struct BuiltScene {
   std::vector<fluid::PressureProbeSpec<D>> probes;
   std::vector<std::string> velocity_probe_names;
   std::vector<fluid::VelocityProbeSpec<D>> velocity_probes;
+  std::vector<std::string> packing_probe_names;
+  std::vector<fluid::PackingProbeSpec<D>> packing_probes;
   std::size_t piston_surface = 0;  ///< index of the piston's surface, if the scene has one
   /// Per body of the scene (in order): its surface, movable and reaction-tracking,
   /// with its reference point at the body's start position.

@@ -157,6 +157,16 @@ struct VelocityProbeConfig {
   double min_fill = 0.5;        ///< particle density xi below which the point reads dry (NaN)
 };
 
+/// A packing probe: the mean particle density xi over a box's grid of points, to watch
+/// the particles pack closer than their densities say (fluid/packing_probe.hpp).
+struct PackingProbeConfig {
+  std::string name;
+  Triple lower{0.0, 0.0, 0.0};  ///< [m]
+  Triple upper{0.0, 0.0, 0.0};  ///< [m]
+  double spacing = 0.0;         ///< grid spacing [m]; 0: 0.618 dx (off the start lattice)
+  double min_fill = 0.5;        ///< xi below which a point is dry (left out)
+};
+
 /// A rigid body's surface, in the body frame (origin = the body's reference point).
 struct BodyShapeConfig {
   std::string kind;                 ///< "sphere", "box", "cylinder" or "mesh"
@@ -278,6 +288,7 @@ struct SceneConfig {
   std::vector<GaugeConfig> gauges;
   std::vector<ProbeConfig> probes;
   std::vector<VelocityProbeConfig> velocity_probes;
+  std::vector<PackingProbeConfig> packing_probes;
   std::vector<BodyConfig> bodies;
   std::vector<MooringConfig> moorings;
   CouplingConfig coupling;
