@@ -92,6 +92,7 @@ def at_spacing(dx, far_wall_x):
     body = replace(body, "upper: [700, 0, 72]", f"upper: [{x}, 0, 72]")
     body = replace(body, "lower: [700, -20, 0], upper: [720, 172, 72]", f"lower: [{x}, -20, 0], upper: [720, 172, 72]")
     body = replace(body, "upper: [700, 132, 72], packed: true}", f"upper: [{x}, 132, 72], packed: true}}")
+    body = replace(body, "spacing: 6.18}", f"spacing: {1.545 * dx:.3g}}}", count=2)
     return replace(body, "{x_start: 520, x_end: 700, k_max: 1.0}", f"{{x_start: 520, x_end: {x}, k_max: 1.0}}")
 
 
