@@ -244,15 +244,10 @@ BodyConfig readBody(MapReader& b, const SceneConfig& c, std::size_t index) {
 }  // namespace
 
 void readBodies(MapReader& top, SceneConfig& c) {
-  const YAML::Node list = top.child("bodies");
-  if (list.IsDefined() && !list.IsNull()) {
-    if (!list.IsSequence()) top.fail("bodies", "expected a list of rigid bodies, got " + describeNode(list));
-    for (std::size_t i = 0; i < list.size(); ++i) {
-      MapReader b(list[i], "bodies[" + std::to_string(i) + "]", top.source());
-      c.bodies.push_back(readBody(b, c, i));
-      b.finish();
-    }
-  }
+  forEachListEntry(top, "bodies", "rigid bodies", [&](MapReader& b, std::size_t i) {
+    c.bodies.push_back(readBody(b, c, i));
+    b.finish();
+  });
   const YAML::Node lines = top.child("moorings");
   if (lines.IsDefined() && !lines.IsNull()) {
     if (!lines.IsSequence()) top.fail("moorings", "expected a list of mooring lines, got " + describeNode(lines));

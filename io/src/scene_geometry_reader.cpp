@@ -264,11 +264,7 @@ void readGeometry(MapReader& top, SceneConfig& c) {
 }
 
 void readVelocityProbes(MapReader& top, SceneConfig& c) {
-  const YAML::Node probes = top.child("velocity_probes");
-  if (!probes.IsDefined() || probes.IsNull()) return;
-  if (!probes.IsSequence()) top.fail("velocity_probes", "expected a list of probes, got " + describeNode(probes));
-  for (std::size_t i = 0; i < probes.size(); ++i) {
-    MapReader m(probes[i], "velocity_probes[" + std::to_string(i) + "]", top.source());
+  forEachListEntry(top, "velocity_probes", "probes", [&](MapReader& m, std::size_t i) {
     VelocityProbeConfig p;
     p.name = m.text("name", "V" + std::to_string(i + 1));
     p.point = toTriple(m.vector("point", c.dim));
@@ -279,18 +275,14 @@ void readVelocityProbes(MapReader& top, SceneConfig& c) {
         m.fail("point", "the point is outside the scene's domain");
     m.finish();
     c.velocity_probes.push_back(p);
-  }
+  });
 }
 
 // A box of grid points; the grid spacing defaults to 0.618 dx (the reader's c.dx is set by now).
 void readPackingProbes(MapReader& top, SceneConfig& c) {
-  const YAML::Node probes = top.child("packing_probes");
-  if (!probes.IsDefined() || probes.IsNull()) return;
-  if (!probes.IsSequence()) top.fail("packing_probes", "expected a list of probes, got " + describeNode(probes));
-  for (std::size_t i = 0; i < probes.size(); ++i) {
-    MapReader m(probes[i], "packing_probes[" + std::to_string(i) + "]", top.source());
+  forEachListEntry(top, "packing_probes", "probes", [&](MapReader& m, std::size_t i) {
     PackingProbeConfig p;
-    p.name = m.text("name", "P" + std::to_string(i + 1));
+    p.name = m.text("name", "pack" + std::to_string(i + 1));
     p.lower = toTriple(m.vector("lower", c.dim));
     p.upper = toTriple(m.vector("upper", c.dim));
     for (int a = 0; a < c.dim; ++a)
@@ -304,81 +296,70 @@ void readPackingProbes(MapReader& top, SceneConfig& c) {
     if (!(p.min_fill > 0.0 && p.min_fill < 1.0)) m.fail("min_fill", "expected a particle density in (0, 1) [-]");
     m.finish();
     c.packing_probes.push_back(p);
-  }
+  });
 }
 
 void readSensors(MapReader& top, SceneConfig& c) {
-  const YamlSource& src = top.source();
-  const YAML::Node gauges = top.child("gauges");
-  if (gauges.IsDefined() && !gauges.IsNull()) {
-    if (!gauges.IsSequence()) top.fail("gauges", "expected a list of wave gauges, got " + describeNode(gauges));
-    for (std::size_t i = 0; i < gauges.size(); ++i) {
-      MapReader m(gauges[i], "gauges[" + std::to_string(i) + "]", src);
-      GaugeConfig g;
-      g.name = m.text("name", "G" + std::to_string(i + 1));
-      g.x = m.requiredNumber("x");
-      g.z = c.dim == 3 ? m.requiredNumber("z") : 0.0;
-      g.bottom = m.number("bottom", 0.0);
-      g.top = m.requiredNumber("top");
-      g.threshold = m.number("threshold", g.threshold);
-      g.volume_edge = m.boolean("volume_edge", g.volume_edge);
-      if (!(g.top > g.bottom)) m.fail("top", "expected top > bottom [m]");
-      if (!(g.threshold > 0.0 && g.threshold < 1.0)) m.fail("threshold", "expected xi_t in (0, 1) (METHOD.md section 3: 0.8)");
-      m.finish();
-      c.gauges.push_back(g);
+  forEachListEntry(top, "gauges", "wave gauges", [&](MapReader& m, std::size_t i) {
+    GaugeConfig g;
+    g.name = m.text("name", "G" + std::to_string(i + 1));
+    g.x = m.requiredNumber("x");
+    g.z = c.dim == 3 ? m.requiredNumber("z") : 0.0;
+    g.bottom = m.number("bottom", 0.0);
+    g.top = m.requiredNumber("top");
+    g.threshold = m.number("threshold", g.threshold);
+    g.volume_edge = m.boolean("volume_edge", g.volume_edge);
+    if (!(g.top > g.bottom)) m.fail("top", "expected top > bottom [m]");
+    if (!(g.threshold > 0.0 && g.threshold < 1.0)) m.fail("threshold", "expected xi_t in (0, 1) (METHOD.md section 3: 0.8)");
+    m.finish();
+    c.gauges.push_back(g);
+  });
+  forEachListEntry(top, "pressure_probes", "probes", [&](MapReader& m, std::size_t i) {
+    ProbeConfig p;
+    p.name = m.text("name", "P" + std::to_string(i + 1));
+    p.surface = m.requiredText("surface");
+    p.point = toTriple(m.vector("point", c.dim));
+    p.normal = toTriple(m.vector("normal", c.dim));
+    p.radius = m.positive("radius", c.dx, "patch radius [m]");
+    p.interpolation_offset = m.positive("interpolation_offset", 1.5 * c.dx, "distance in front of the wall [m]");
+    p.moving_mean = m.positive("moving_mean", 0.0, "window of the trailing moving mean [s]", true);
+    if (std::hypot(p.normal[0], p.normal[1], p.normal[2]) == 0.0) m.fail("normal", "expected a non-zero normal into the fluid");
+    bool found = false;
+    std::vector<std::string> names;
+    for (auto& t : c.tanks) {
+      names.push_back(t.name);
+      if (t.name == p.surface) found = t.track_reaction = true;
     }
-  }
-  const YAML::Node probes = top.child("pressure_probes");
-  if (probes.IsDefined() && !probes.IsNull()) {
-    if (!probes.IsSequence()) top.fail("pressure_probes", "expected a list of probes, got " + describeNode(probes));
-    for (std::size_t i = 0; i < probes.size(); ++i) {
-      MapReader m(probes[i], "pressure_probes[" + std::to_string(i) + "]", src);
-      ProbeConfig p;
-      p.name = m.text("name", "P" + std::to_string(i + 1));
-      p.surface = m.requiredText("surface");
-      p.point = toTriple(m.vector("point", c.dim));
-      p.normal = toTriple(m.vector("normal", c.dim));
-      p.radius = m.positive("radius", c.dx, "patch radius [m]");
-      p.interpolation_offset = m.positive("interpolation_offset", 1.5 * c.dx, "distance in front of the wall [m]");
-      p.moving_mean = m.positive("moving_mean", 0.0, "window of the trailing moving mean [s]", true);
-      if (std::hypot(p.normal[0], p.normal[1], p.normal[2]) == 0.0) m.fail("normal", "expected a non-zero normal into the fluid");
-      bool found = false;
-      std::vector<std::string> names;
-      for (auto& t : c.tanks) {
-        names.push_back(t.name);
-        if (t.name == p.surface) found = t.track_reaction = true;
-      }
-      for (auto& b : c.boxes) {
-        names.push_back(b.name);
-        if (b.name == p.surface) found = b.track_reaction = true;
-      }
-      for (auto& g : c.meshes) {
-        names.push_back(g.name);
-        if (g.name == p.surface) found = g.track_reaction = true;
-      }
-      for (auto& k : c.circles) {
-        names.push_back(k.name);
-        if (k.name == p.surface) found = k.track_reaction = true;
-      }
-      for (const auto& b : c.bodies) {
-        names.push_back(b.name);
-        if (b.name == p.surface && !found) found = p.on_body = true;
-      }
-      if (!found) {
-        const std::string guess = closestWord(p.surface, names);
-        m.fail("surface", "no tank, box, mesh, sphere, cylinder or body is named '" + p.surface + "'" + (guess.empty() ? "" : " (did you mean '" + guess + "'?)"));
-      }
-      const double off = p.on_body ? distanceToBodySurface(c, p.surface, p.point) : distanceToSurface(c, p.surface, p.point);
-      if (off > c.spacing()) {
-        char msg[200];
-        std::snprintf(msg, sizeof msg, "the point is %.3g m from the surface '%s': expected on it (within the boundary spacing %g m)",
-                      off, p.surface.c_str(), c.spacing());
-        m.fail("point", msg);
-      }
-      m.finish();
-      c.probes.push_back(p);
+    for (auto& b : c.boxes) {
+      names.push_back(b.name);
+      if (b.name == p.surface) found = b.track_reaction = true;
     }
-  }
+    for (auto& g : c.meshes) {
+      names.push_back(g.name);
+      if (g.name == p.surface) found = g.track_reaction = true;
+    }
+    for (auto& k : c.circles) {
+      names.push_back(k.name);
+      if (k.name == p.surface) found = k.track_reaction = true;
+    }
+    for (const auto& b : c.bodies) {
+      names.push_back(b.name);
+      if (b.name == p.surface && !found) found = p.on_body = true;
+    }
+    if (!found) {
+      const std::string guess = closestWord(p.surface, names);
+      m.fail("surface", "no tank, box, mesh, sphere, cylinder or body is named '" + p.surface + "'" + (guess.empty() ? "" : " (did you mean '" + guess + "'?)"));
+    }
+    const double off = p.on_body ? distanceToBodySurface(c, p.surface, p.point) : distanceToSurface(c, p.surface, p.point);
+    if (off > c.spacing()) {
+      char msg[200];
+      std::snprintf(msg, sizeof msg, "the point is %.3g m from the surface '%s': expected on it (within the boundary spacing %g m)",
+                    off, p.surface.c_str(), c.spacing());
+      m.fail("point", msg);
+    }
+    m.finish();
+    c.probes.push_back(p);
+  });
   readVelocityProbes(top, c);
   readPackingProbes(top, c);
 }

@@ -94,11 +94,7 @@ void readPiston(MapReader& top, SceneConfig& c) {
 }
 
 void readDampingZones(MapReader& top, SceneConfig& c) {
-  const YAML::Node list = top.child("damping_zones");
-  if (!list.IsDefined() || list.IsNull()) return;
-  if (!list.IsSequence()) top.fail("damping_zones", "expected a list of zones, got " + describeNode(list));
-  for (std::size_t i = 0; i < list.size(); ++i) {
-    MapReader m(list[i], "damping_zones[" + std::to_string(i) + "]", top.source());
+  forEachListEntry(top, "damping_zones", "zones", [&](MapReader& m, std::size_t) {
     DampingZoneConfig z;
     z.x_start = m.requiredNumber("x_start");
     z.x_end = m.requiredNumber("x_end");
@@ -112,7 +108,7 @@ void readDampingZones(MapReader& top, SceneConfig& c) {
     }
     m.finish();
     c.damping_zones.push_back(z);
-  }
+  });
 }
 
 void readForcing(MapReader& top, SceneConfig& c) {

@@ -69,4 +69,17 @@ class MapReader {
   std::vector<std::string> known_;
 };
 
+/// Reads the list under `key` of `top`: read(m, i) for its i-th entry, a MapReader at path
+/// "key[i]". Absent or null: nothing. Not a list: SceneError "expected a list of <what>".
+template <class Read>
+void forEachListEntry(MapReader& top, const std::string& key, const std::string& what, Read&& read) {
+  const YAML::Node list = top.child(key);
+  if (!list.IsDefined() || list.IsNull()) return;
+  if (!list.IsSequence()) top.fail(key, "expected a list of " + what + ", got " + describeNode(list));
+  for (std::size_t i = 0; i < list.size(); ++i) {
+    MapReader m(list[i], top.childPath(key) + "[" + std::to_string(i) + "]", top.source());
+    read(m, i);
+  }
+}
+
 }  // namespace moorsph::io::detail

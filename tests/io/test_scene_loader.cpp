@@ -557,7 +557,7 @@ TEST(SceneLoader, PackingProbes) {
       "  - {lower: [0.0, 0.0], upper: [0.2, 0.2], spacing: 0.005, min_fill: 0.7}\n";
   const auto c = io::loadSceneText(std::string(kBase) + probes, "s.yaml");
   ASSERT_EQ(c.packing_probes.size(), 2u);
-  EXPECT_EQ(c.packing_probes[1].name, "P2");
+  EXPECT_EQ(c.packing_probes[1].name, "pack2");
   EXPECT_DOUBLE_EQ(c.packing_probes[0].spacing, 0.0);
   EXPECT_DOUBLE_EQ(c.packing_probes[1].min_fill, 0.7);
   const auto built = io::buildScene<2>(c);
