@@ -375,10 +375,7 @@ BuiltScene<D> buildScene(const SceneConfig& c) {
     fluid::PackingProbeSpec<D> p;
     p.lower = toVec<D>(pc.lower);
     p.upper = toVec<D>(pc.upper);
-    // Default: the golden-ratio fraction of dx. A grid spacing commensurate with the start
-    // lattice samples one spot of every lattice cell (on the 2D flume at dx: xi 1.0152
-    // against the cell average 1.0000); 0.618 dx spreads the points over the cell.
-    p.spacing = pc.spacing > 0.0 ? pc.spacing : 0.618 * c.dx;
+    p.spacing = pc.spacing > 0.0 ? pc.spacing : fluid::kPackingSpacingPerDx * c.dx;
     p.min_fill = pc.min_fill;
     out.packing_probe_names.push_back(pc.name);
     out.packing_probes.push_back(p);

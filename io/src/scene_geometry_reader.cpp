@@ -3,6 +3,7 @@
 #include <cmath>
 #include <filesystem>
 #include <limits>
+#include <moorsph/fluid/packing_probe.hpp>
 #include <moorsph/io/body_geometry.hpp>
 #include <moorsph/io/mesh_sampling.hpp>
 #include <moorsph/io/primitive_shapes.hpp>
@@ -278,7 +279,8 @@ void readVelocityProbes(MapReader& top, SceneConfig& c) {
   });
 }
 
-// A box of grid points; the grid spacing defaults to 0.618 dx (the reader's c.dx is set by now).
+// A box of grid points; the grid spacing defaults to fluid::kPackingSpacingPerDx dx (the
+// reader's c.dx is set by now).
 void readPackingProbes(MapReader& top, SceneConfig& c) {
   forEachListEntry(top, "packing_probes", "probes", [&](MapReader& m, std::size_t i) {
     PackingProbeConfig p;
@@ -290,7 +292,7 @@ void readPackingProbes(MapReader& top, SceneConfig& c) {
     p.spacing = m.number("spacing", p.spacing);
     if (p.spacing < 0.0) m.fail("spacing", "expected a grid spacing > 0 [m] (or 0 for 0.618 dx)");
     double points = 1.0;
-    for (int a = 0; a < c.dim; ++a) points *= (p.upper[a] - p.lower[a]) / (p.spacing > 0.0 ? p.spacing : 0.618 * c.dx);
+    for (int a = 0; a < c.dim; ++a) points *= (p.upper[a] - p.lower[a]) / (p.spacing > 0.0 ? p.spacing : fluid::kPackingSpacingPerDx * c.dx);
     if (points > 1e7) m.fail("spacing", "the box holds more than 1e7 grid points; give a larger spacing");
     p.min_fill = m.number("min_fill", p.min_fill);
     if (!(p.min_fill > 0.0 && p.min_fill < 1.0)) m.fail("min_fill", "expected a particle density in (0, 1) [-]");

@@ -6,9 +6,9 @@
 #include <string>
 #include <vector>
 #include <moorsph/fluid/fluid_simulation.hpp>
+#include <moorsph/fluid/packing_probe.hpp>
 #include <moorsph/fluid/pressure_probe.hpp>
 #include <moorsph/fluid/tank_scene.hpp>
-#include <moorsph/fluid/packing_probe.hpp>
 #include <moorsph/fluid/velocity_probe.hpp>
 #include <moorsph/fluid/wave_gauge.hpp>
 #include <moorsph/io/scene_config.hpp>
