@@ -97,7 +97,8 @@ std::vector<std::string> changedLineModels(const std::string& saved, const std::
 template <int D>
 bool sameBoundary(const std::string& saved_yaml, const io::BuiltScene<D>& built) {
   try {
-    const io::BuiltScene<D> saved = io::buildScene<D>(io::loadSceneText(saved_yaml, "checkpoint scene"));
+    const io::BuiltScene<D> saved =
+        io::buildScene<D>(io::loadSceneText(saved_yaml, "checkpoint scene"), io::WaterBuild::Skip);
     const auto &a = saved.scene.boundary, &b = built.scene.boundary;
     if (a.surfaces.size() != b.surfaces.size() || a.particles.size() != b.particles.size()) return false;
     for (std::size_t s = 0; s < a.surfaces.size(); ++s)
@@ -147,12 +148,19 @@ int runDim(const io::SceneConfig& config, const RunOptions& o, const std::string
   {
     std::ofstream(out + "/scene.resolved.yaml") << resolved;
   }
-  auto built = io::buildScene<D>(config);
   io::Checkpoint restored;
   const bool restarting = !o.restart.empty();
+  if (restarting) restored = io::readCheckpoint(o.restart);
+  // A restart takes its particles from the checkpoint. When the scene is the checkpoint's
+  // as far as the particle set goes, and the checkpoint says how many particles that scene
+  // built, the water blocks are not built again.
+  const std::string changed = restarting ? changedParticleSetKey(restored.scene_yaml, resolved) : std::string();
+  const bool same_water = restarting && changed.empty() && restored.scene_fluid_count > 0;
+  auto built = io::buildScene<D>(config, same_water ? io::WaterBuild::Skip : io::WaterBuild::Particles);
+  const std::size_t scene_fluid_count =
+      same_water ? static_cast<std::size_t>(restored.scene_fluid_count) : built.scene.fluid.size();
   fluid::FluidParticles<D> particles = built.scene.fluid;
   if (restarting) {
-    restored = io::readCheckpoint(o.restart);
     particles = io::restoreParticles<D>(restored);
     // A run with 'outflow' may have removed spray: its checkpoint holds fewer particles,
     // and exactly as many fewer as its outflow tally says.
@@ -161,13 +169,12 @@ int runDim(const io::SceneConfig& config, const RunOptions& o, const std::string
       throw io::SceneError(o.restart, "effects",
                            "the checkpoint's run removed " + std::to_string(removed) +
                                " particles through 'outflow'; list 'outflow' in the effects to continue it");
-    if (particles.size() + removed != built.scene.fluid.size())
+    if (particles.size() + removed != scene_fluid_count)
       throw io::SceneError(o.restart, "", "the checkpoint holds " + std::to_string(particles.size()) +
                                               " fluid particles" +
                                               (removed ? " (" + std::to_string(removed) + " removed by outflow)" : "") +
-                                              ", the scene " + std::to_string(built.scene.fluid.size()) +
+                                              ", the scene " + std::to_string(scene_fluid_count) +
                                               ": it belongs to another scene");
-    const std::string changed = changedParticleSetKey(restored.scene_yaml, resolved);
     if (!changed.empty() && !sameBoundary<D>(restored.scene_yaml, built))
       throw io::SceneError(o.restart, changed,
                            "differs from the scene the checkpoint was written for; a restart may change only what "
@@ -217,6 +224,7 @@ int runDim(const io::SceneConfig& config, const RunOptions& o, const std::string
   if (restarting) {
     log.line(format("  restarted from t = %.6g s, step %.0f", restored.time, static_cast<double>(restored.steps)) + " (" +
              o.restart + ")");
+    if (same_water) log.line("  water blocks not built again: the scene's particle set is the checkpoint's");
     for (const std::string& note : changedLineModels(restored.scene_yaml, resolved)) log.line("  note: " + note);
     if (!lists_restored)
       log.line("  note: the checkpoint has no neighbour-list positions that fit this run (written before they were "
@@ -242,6 +250,7 @@ int runDim(const io::SceneConfig& config, const RunOptions& o, const std::string
   auto writeCheckpointNow = [&](const std::string& path, const std::string& reason) {
     io::Checkpoint c = io::captureCheckpoint(sim);
     c.scene_yaml = resolved;
+    c.scene_fluid_count = static_cast<std::int64_t>(scene_fluid_count);
     c.reason = reason;
     c.next_output = recorder.nextOutputIndex();
     c.next_snapshot = next_snapshot;

@@ -122,6 +122,7 @@ void writeCheckpoint(const std::string& path, const Checkpoint& c) {
     if (!c.bodies.empty()) h5::writeDoubles(file, "bodies", c.bodies, 1, "SI");
     if (!c.outflow.empty()) h5::writeDoubles(file, "outflow", c.outflow, 1, "particles, kg, J, s");
     if (!c.piston_work.empty()) h5::writeDoubles(file, "piston_work", c.piston_work, 1, "J");
+    if (c.scene_fluid_count > 0) h5::writeInt64(file, "scene_fluid_count", {c.scene_fluid_count}, "1");
     if (H5Fflush(file, H5F_SCOPE_GLOBAL) < 0) throw std::runtime_error("HDF5: flush " + tmp);
   }
   std::filesystem::rename(tmp, path);  // atomic on one file system: never a half-written checkpoint
@@ -160,6 +161,11 @@ Checkpoint readCheckpoint(const std::string& path) {
   if (H5Lexists(file, "bodies", H5P_DEFAULT) > 0) c.bodies = h5::readDoubles(file, "bodies");
   if (H5Lexists(file, "outflow", H5P_DEFAULT) > 0) c.outflow = h5::readDoubles(file, "outflow");
   if (H5Lexists(file, "piston_work", H5P_DEFAULT) > 0) c.piston_work = h5::readDoubles(file, "piston_work");
+  if (H5Lexists(file, "scene_fluid_count", H5P_DEFAULT) > 0) {
+    const auto count = h5::readInt64(file, "scene_fluid_count");
+    if (count.size() != 1) throw std::runtime_error(path + ": bad scene_fluid_count");
+    c.scene_fluid_count = count[0];
+  }
   const std::size_t n = c.rho.size();
   if (c.r.size() != n * c.dim || c.v.size() != n * c.dim || c.m.size() != n || c.id.size() != n ||
       (!c.r_at_build.empty() && c.r_at_build.size() != n * c.dim) || c.boundary_r_at_build.size() % c.dim != 0)

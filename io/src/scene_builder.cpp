@@ -209,7 +209,7 @@ fluid::FluidSetup<D> makeSetup(const SceneConfig& c) {
 }
 
 template <int D>
-BuiltScene<D> buildScene(const SceneConfig& c) {
+BuiltScene<D> buildScene(const SceneConfig& c, WaterBuild water) {
   BuiltScene<D> out;
   auto& scene = out.scene;
   scene.setup = makeSetup<D>(c);
@@ -294,9 +294,10 @@ BuiltScene<D> buildScene(const SceneConfig& c) {
 
   for (std::size_t wi = 0; wi < c.water.size(); ++wi) {
     const auto& w = c.water[wi];
+    noteWaterBlock<D>(w, c.dx, wi, out.notes);
+    if (water == WaterBuild::Skip) continue;
     fluid::FluidParticles<D> block;
     fluid::fillBox<D>(block, toVec<D>(w.box.lower), toVec<D>(w.box.upper), c.dx, eos, g, w.box.upper[1]);
-    noteWaterBlock<D>(w, c.dx, wi, out.notes);
     if (w.packed) packWaterBlock<D>(w, wi, c, scene.setup, eos, g, block, out.notes);
     // Obstacle boxes are solid: water is not placed inside them (a particle half a
     // spacing outside a face stays).
@@ -315,7 +316,8 @@ BuiltScene<D> buildScene(const SceneConfig& c) {
       if (!solid) scene.fluid.add(block.r[i], block.v[i], block.rho[i], block.m[i]);
     }
   }
-  if (scene.fluid.size() == 0) throw std::invalid_argument("the scene's water blocks hold no particle outside its boxes");
+  if (water == WaterBuild::Particles && scene.fluid.size() == 0)
+    throw std::invalid_argument("the scene's water blocks hold no particle outside its boxes");
 
   for (const auto& gc : c.gauges) {
     fluid::WaveGaugeSpec<D> g;
@@ -407,8 +409,8 @@ ParticleCounts countParticles(const SceneConfig& c) {
   return n;
 }
 
-template BuiltScene<2> buildScene<2>(const SceneConfig&);
-template BuiltScene<3> buildScene<3>(const SceneConfig&);
+template BuiltScene<2> buildScene<2>(const SceneConfig&, WaterBuild);
+template BuiltScene<3> buildScene<3>(const SceneConfig&, WaterBuild);
 template fluid::FluidSetup<2> makeSetup<2>(const SceneConfig&);
 template fluid::FluidSetup<3> makeSetup<3>(const SceneConfig&);
 

@@ -41,6 +41,11 @@ std::size_t countDifferences(const io::Checkpoint& a, const io::Checkpoint& b) {
   return differing;
 }
 
+std::string readText(const std::string& path) {
+  std::ifstream in(path);
+  return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+}
+
 /// The restart's series.h5 holds the whole run: every row of the straight run's energy
 /// series (but the wall time), the same times and values to the bit, from t = 0.
 void expectSameHistory(const std::string& straight, const std::string& restarted, double restart_time) {
@@ -89,6 +94,23 @@ TEST(Checkpoint, StopAndRestartIsBitIdenticalToAStraightRun) {
   // The checkpoint was written atomically: no temporary is left behind.
   EXPECT_FALSE(std::filesystem::exists(dir + "/first/checkpoint.h5.tmp"));
   expectSameHistory(dir + "/straight/series.h5", dir + "/second/series.h5", half.time);
+  // The restart took its particles from the checkpoint without building the water again
+  // (the scene is the checkpoint's) and carries the scene's particle count on.
+  EXPECT_EQ(half.scene_fluid_count, 200);
+  EXPECT_EQ(b.scene_fluid_count, 200);
+  EXPECT_NE(readText(dir + "/second/log.txt").find("water blocks not built again"), std::string::npos);
+  // A checkpoint written before session 38 has no count: the restart builds the water to
+  // check it against the scene, and ends the same.
+  io::Checkpoint old = half;
+  old.scene_fluid_count = 0;
+  io::writeCheckpoint(dir + "/old.h5", old);
+  app::RunOptions from_old = options(scene, dir + "/from_old", 0.1);
+  from_old.restart = dir + "/old.h5";
+  ASSERT_EQ(app::runScene(from_old), app::kSuccess);
+  EXPECT_EQ(readText(dir + "/from_old/log.txt").find("water blocks not built again"), std::string::npos);
+  const auto c = io::readCheckpoint(dir + "/from_old/checkpoint.h5");
+  EXPECT_EQ(countDifferences(a, c), 0u);
+  EXPECT_EQ(c.scene_fluid_count, 200);
 }
 
 TEST(Checkpoint, InterruptWritesACheckpointThatRestarts) {

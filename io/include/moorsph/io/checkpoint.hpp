@@ -12,7 +12,9 @@
 // rho (N) [kg/m^3], m (N) [kg], id (N); r_at_build (N,D) and boundary_r_at_build
 // (NB,D) [m], the positions of the last list build (absent in checkpoints written before
 // session 35: such a restart builds its lists afresh); with bodies, "bodies": the
-// multibody state (bodies::SystemSnapshot packed into numbers by the app, SI units).
+// multibody state (bodies::SystemSnapshot packed into numbers by the app, SI units);
+// scene_fluid_count: the fluid particles the scene built at the run's start (absent before
+// session 38), so a restart of the same scene need not build its water again.
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -39,6 +41,9 @@ struct Checkpoint {
   std::vector<double> outflow;
   /// The piston's work on the water so far [J]; empty without a piston.
   std::vector<double> piston_work;
+  /// Fluid particles the scene built at the run's start (the saved ones plus those the
+  /// outflow removed); 0 when unknown (files written before session 38).
+  std::int64_t scene_fluid_count = 0;
   std::size_t size() const { return rho.size(); }
 };
 
