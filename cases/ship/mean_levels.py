@@ -7,7 +7,8 @@ How docs/validation/ship.md measures the gauges' mean fall as the sea builds: th
 each gauge (150 m, the focus at 200 m, 470 m), of the CoM height and of each fairlead
 tension over each window. The water's volume does not change (sum m/rho is constant to
 1e-4); a fall of the gauges is the particles packing closer than their densities say
-(ship.md finding 6, session 37). RUN_DIRs are the
+(ship.md finding 6, session 37), which the bulk packing probes' mean xi (bulk_fore,
+bulk_aft; runs from session 38 on, "-" for older ones) shows directly. RUN_DIRs are the
 segments of one run, stitched as plot_ship_run.py does. Tested by
 tests/cases/ship/test_compare_variants.py.
 """
@@ -21,6 +22,11 @@ from compare_variants import LINES  # noqa: E402
 from plot_ship_run import stitch  # noqa: E402
 
 GAUGES = ["G150", "G200_side", "G470"]
+PACKING = ["bulk_fore", "bulk_aft"]
+
+
+def fmt(value, digits):
+    return "-" if np.isnan(value) else f"{value:.{digits}f}"
 
 
 def window_mean(cols, column, t0, t1):
@@ -37,6 +43,8 @@ def levels(s, t0, t1):
     out["CoM"] = window_mean(s["points_ship"], "com_y", t0, t1)
     for line in LINES:
         out[line[5:]] = window_mean(s[line], "fairlead_tension", t0, t1) / 1e6
+    for box in PACKING:
+        out[box] = window_mean(s["packing_probes"], box + "_xi_mean", t0, t1)
     return out
 
 
@@ -58,8 +66,8 @@ def main():
     runs = args[:k] + args[k + 2:]
     if not runs:
         sys.exit(__doc__)
-    print("| run | window [s] | " + " | ".join(GAUGES) + " | CoM [m] | fore / aft port / aft stbd [MN] |")
-    print("|---" * (len(GAUGES) + 4) + "|")
+    print("| run | window [s] | " + " | ".join(GAUGES) + " | CoM [m] | fore / aft port / aft stbd [MN] | xi bulk fore / aft |")
+    print("|---" * (len(GAUGES) + 5) + "|")
     for arg in runs:
         if "=" not in arg:
             sys.exit(f"mean_levels.py: '{arg}' is not NAME=RUN_DIR[,RUN_DIR...]")
@@ -69,7 +77,7 @@ def main():
             m = levels(s, t0, t1)
             tensions = " / ".join(f"{m[line[5:]]:.2f}" for line in LINES)
             print(f"| {name} | {t0:g}-{t1:g} | " + " | ".join(f"{m[g]:.3f}" for g in GAUGES) +
-                  f" | {m['CoM']:.3f} | {tensions} |")
+                  f" | {m['CoM']:.3f} | {tensions} | " + " / ".join(fmt(m[b], 4) for b in PACKING) + " |")
 
 
 if __name__ == "__main__":

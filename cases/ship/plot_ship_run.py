@@ -29,6 +29,8 @@ GROUPS = {
     "green_water_ship": ["volume"],
     "probes": [f"sensor{k}_interpolated_mean" for k in range(1, 5)],
     "energy": ["wall_time"],
+    # Bulk packing (mean kernel sum xi): recorded from session 38 on; empty for older runs.
+    "packing_probes": ["bulk_fore_xi_mean", "bulk_aft_xi_mean"],
 }
 
 

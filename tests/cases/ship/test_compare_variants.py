@@ -57,6 +57,7 @@ def write_segment(path, t0, t1, offset):
         f["gauges/G150"][...] = 132.0 + 2.0 * np.sin(t)
         f["gauges/G200_side"][...] = 132.0 + 3.0 * np.sin(2 * np.pi * (t - 13.0) / 20.0 + np.pi / 2)
         f["gauges/G470"][...] = 132.0 - 0.01 * t  # a level falling 1 cm/s
+        f["packing_probes/bulk_fore_xi_mean"][...] = 0.997 + 1e-4 * t  # the bulk packing 1e-4 per second
 
 
 with tempfile.TemporaryDirectory() as d:
@@ -93,6 +94,7 @@ with tempfile.TemporaryDirectory() as d:
     check("CoM from the second segment", round(m["CoM"], 6), round(130.0 + float(np.sin(tt).mean()), 6))
     check("windows", ml.parse_windows("20-30,60-100"), [(20.0, 30.0), (60.0, 100.0)])
     check("an empty window", np.isnan(ml.levels(s, 30.0, 40.0)["CoM"]), True)
+    check("bulk packing, the window's middle sample", round(m["bulk_fore"], 6), round(0.997 + 1e-4 * 14.975, 6))
 
     # A run that stops inside the window (here at 20 s, window to 40 s) still compares;
     # one whose series end before the window's first second says so instead of failing
