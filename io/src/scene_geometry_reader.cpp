@@ -328,22 +328,16 @@ void readSensors(MapReader& top, SceneConfig& c) {
     if (std::hypot(p.normal[0], p.normal[1], p.normal[2]) == 0.0) m.fail("normal", "expected a non-zero normal into the fluid");
     bool found = false;
     std::vector<std::string> names;
-    for (auto& t : c.tanks) {
-      names.push_back(t.name);
-      if (t.name == p.surface) found = t.track_reaction = true;
-    }
-    for (auto& b : c.boxes) {
-      names.push_back(b.name);
-      if (b.name == p.surface) found = b.track_reaction = true;
-    }
-    for (auto& g : c.meshes) {
-      names.push_back(g.name);
-      if (g.name == p.surface) found = g.track_reaction = true;
-    }
-    for (auto& k : c.circles) {
-      names.push_back(k.name);
-      if (k.name == p.surface) found = k.track_reaction = true;
-    }
+    const auto fixedSurfaces = [&](auto& list) {  // tanks, boxes, meshes, circles: track the one named
+      for (auto& surface : list) {
+        names.push_back(surface.name);
+        if (surface.name == p.surface) found = surface.track_reaction = true;
+      }
+    };
+    fixedSurfaces(c.tanks);
+    fixedSurfaces(c.boxes);
+    fixedSurfaces(c.meshes);
+    fixedSurfaces(c.circles);
     for (const auto& b : c.bodies) {
       names.push_back(b.name);
       if (b.name == p.surface && !found) found = p.on_body = true;
