@@ -234,7 +234,7 @@ int runDim(const io::SceneConfig& config, const RunOptions& o, const std::string
 
   io::SeriesFile series(out + "/series.h5");
   cases::RunRecorder<D> recorder(sim, series, config.output.interval);
-  SceneSeries<D> sensors(sim, built);
+  SceneSeries<D> sensors(sim, built, [&log](const std::string& text) { log.line("  " + text, true); });
   sensors.attach(recorder);
 #if MOORSPH_HAS_BODIES
   if (co) attachBodySeries(recorder, *co, config);

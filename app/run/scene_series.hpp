@@ -8,8 +8,13 @@
 // /outflow (spray removed by the outflow effect: count, mass, energy carried out),
 // /piston (the plate's displacement, velocity, the fluid's force on it and the work it
 // has done on the water).
+#include <cmath>
+#include <cstdio>
+#include <functional>
+#include <limits>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 #include <moorsph/cases/run_recorder.hpp>
 #include <moorsph/fluid/piston.hpp>
@@ -21,8 +26,11 @@ namespace moorsph::app {
 template <int D>
 class SceneSeries {
  public:
-  SceneSeries(const fluid::FluidSimulation<D>& sim, const io::BuiltScene<D>& built)
-      : names_(built.gauge_names),
+  /// `note` receives the notices a run's log should carry (a packing probe's rise).
+  SceneSeries(const fluid::FluidSimulation<D>& sim, const io::BuiltScene<D>& built,
+              std::function<void(const std::string&)> note = {})
+      : note_(std::move(note)),
+        names_(built.gauge_names),
         piston_(sim.template findEffect<fluid::Piston<D>>()),
         outflow_(sim.outflow()),
         plate_(built.piston_surface) {
@@ -37,7 +45,11 @@ class SceneSeries {
     probe_names_ = built.probe_names;
     for (const auto& v : built.velocity_probes) velocity_probes_.emplace_back(v);
     velocity_probe_names_ = built.velocity_probe_names;
-    for (const auto& p : built.packing_probes) packing_probes_.emplace_back(p);
+    for (std::size_t k = 0; k < built.packing_probes.size(); ++k) {
+      packing_probes_.emplace_back(built.packing_probes[k]);
+      const double rise = k < built.packing_warn_rises.size() ? built.packing_warn_rises[k] : 0.0;
+      packing_watch_.push_back({std::numeric_limits<double>::quiet_NaN(), rise, false});
+    }
     packing_probe_names_ = built.packing_probe_names;
     for (std::size_t k = 0; k < built.probes.size(); ++k) {
       const double window = k < built.probe_means.size() ? built.probe_means[k] : 0.0;
@@ -140,8 +152,9 @@ class SceneSeries {
     recorder.addSeries("packing_probes", columns,
                        [this](const fluid::FluidSimulation<D>& s) {
                          std::vector<double> v;
-                         for (const auto& p : packing_probes_) {
-                           const fluid::PackingReading r = p.read(s);
+                         for (std::size_t k = 0; k < packing_probes_.size(); ++k) {
+                           const fluid::PackingReading r = packing_probes_[k].read(s);
+                           watchPacking(k, r.mean, s.time());
                            v.insert(v.end(), {r.mean, r.spread, r.wet_fraction});
                          }
                          return v;
@@ -152,6 +165,24 @@ class SceneSeries {
                        "surface then stands lower than the water's volume by about depth x the rise)");
   }
 
+  /// Notes once when a probe's mean xi has risen `rise` above its first reading: the
+  /// particles pack closer than their densities say, and the surface sits low
+  /// (docs/scene-reference.md, packing_probes).
+  void watchPacking(std::size_t k, double mean, double time) {
+    PackingWatch& w = packing_watch_[k];
+    if (std::isnan(w.first)) w.first = mean;
+    if (w.noted || !(w.rise > 0.0) || !(mean - w.first >= w.rise) || !note_) return;
+    w.noted = true;
+    char text[400];
+    std::snprintf(text, sizeof text,
+                  "note: packing probe '%s': mean xi %.4f at t = %.6g s, %.2f%% above its first reading %.4f: the "
+                  "particles pack closer than their densities say, so water levels and floating bodies nearby read low "
+                  "by about the water depth x %.4f",
+                  packing_probe_names_[k].c_str(), mean, time, 100.0 * (mean - w.first), w.first, mean - w.first);
+    note_(text);
+  }
+
+  std::function<void(const std::string&)> note_;
   std::vector<std::string> names_;
   const fluid::Piston<D>* piston_;
   const fluid::Outflow<D>* outflow_;
@@ -163,6 +194,12 @@ class SceneSeries {
   std::vector<fluid::VelocityProbe<D>> velocity_probes_;
   std::vector<std::string> packing_probe_names_;
   std::vector<fluid::PackingProbe<D>> packing_probes_;
+  struct PackingWatch {
+    double first;  ///< the run's first reading (NaN before it)
+    double rise;   ///< rise that is noted; 0: never
+    bool noted;
+  };
+  std::vector<PackingWatch> packing_watch_;
   struct Means {
     MovingMean reaction, interpolated;
     bool on;

@@ -381,6 +381,7 @@ BuiltScene<D> buildScene(const SceneConfig& c, WaterBuild water) {
     p.min_fill = pc.min_fill;
     out.packing_probe_names.push_back(pc.name);
     out.packing_probes.push_back(p);
+    out.packing_warn_rises.push_back(pc.warn_rise);
   }
   return out;
 }

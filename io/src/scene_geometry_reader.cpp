@@ -296,6 +296,7 @@ void readPackingProbes(MapReader& top, SceneConfig& c) {
     if (points > 1e7) m.fail("spacing", "the box holds more than 1e7 grid points; give a larger spacing");
     p.min_fill = m.number("min_fill", p.min_fill);
     if (!(p.min_fill > 0.0 && p.min_fill < 1.0)) m.fail("min_fill", "expected a particle density in (0, 1) [-]");
+    p.warn_rise = m.positive("warn_rise", p.warn_rise, "rise of the mean xi the log notes [-] (0: never)", true);
     m.finish();
     c.packing_probes.push_back(p);
   });

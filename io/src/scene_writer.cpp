@@ -211,7 +211,8 @@ std::string resolvedSceneYaml(const SceneConfig& c) {
       vec(e, "lower", p.lower, c.dim);
       vec(e, "upper", p.upper, c.dim);
       e << YAML::Key << "spacing" << YAML::Value << p.spacing;
-      e << YAML::Key << "min_fill" << YAML::Value << p.min_fill << YAML::EndMap;
+      e << YAML::Key << "min_fill" << YAML::Value << p.min_fill;
+      e << YAML::Key << "warn_rise" << YAML::Value << p.warn_rise << YAML::EndMap;
     }
     e << YAML::EndSeq;
   }

@@ -9,6 +9,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <string>
 #include <vector>
 #include <moorsph/fluid/waves/piston_signal.hpp>
@@ -96,7 +97,8 @@ TEST(RunOutput, PistonSeriesRecordsPlateMotionForceAndWork) {
   o.out = testing::TempDir() + "moorsph_piston_series";
   o.end = 1.2;
   o.threads = 1;
-  o.sets = {"output.interval=0.005", "output.particles_interval=0"};
+  // The packing probe's log note, at a threshold the start's 0.2% settling crosses.
+  o.sets = {"output.interval=0.005", "output.particles_interval=0", "packing_probes[0].warn_rise=0.001"};
   std::filesystem::remove_all(o.out);
   ASSERT_EQ(app::runScene(o), app::kSuccess);
   ASSERT_GT(io::exportSeriesCsv(o.out).size(), 0u);
@@ -147,8 +149,20 @@ TEST(RunOutput, PistonSeriesRecordsPlateMotionForceAndWork) {
   ASSERT_EQ(packing.time.size(), v.time.size());
   const double c2 = 100.0 * 2.0 * 9.81 * 0.3;
   EXPECT_NEAR(packing.value.front(), 1.0 - 9.81 * 0.165 / c2, 2e-4);
+  std::size_t first_risen = packing.time.size();
   for (std::size_t k = 0; k < packing.time.size(); ++k) {
     EXPECT_NEAR(packing.value[k], 1.0, 3e-3) << "t = " << packing.time[k];
     EXPECT_DOUBLE_EQ(wet.value[k], 1.0) << "t = " << packing.time[k];
+    if (first_risen == packing.time.size() && packing.value[k] - packing.value.front() >= 0.001) first_risen = k;
   }
+  // The log notes the first output whose mean is warn_rise above the first reading, once.
+  ASSERT_LT(first_risen, packing.time.size());
+  std::ifstream log(o.out + "/log.txt");
+  const std::string text((std::istreambuf_iterator<char>(log)), std::istreambuf_iterator<char>());
+  char when[64];
+  std::snprintf(when, sizeof when, "at t = %.6g s", packing.time[first_risen]);
+  const auto at = text.find("packing probe 'bulk': mean xi");
+  ASSERT_NE(at, std::string::npos) << text;
+  EXPECT_NE(text.find(when, at), std::string::npos) << text.substr(at, 200);
+  EXPECT_EQ(text.find("packing probe 'bulk'", at + 1), std::string::npos);
 }

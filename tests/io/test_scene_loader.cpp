@@ -560,11 +560,13 @@ TEST(SceneLoader, PackingProbes) {
   EXPECT_EQ(c.packing_probes[1].name, "pack2");
   EXPECT_DOUBLE_EQ(c.packing_probes[0].spacing, 0.0);
   EXPECT_DOUBLE_EQ(c.packing_probes[1].min_fill, 0.7);
+  EXPECT_DOUBLE_EQ(c.packing_probes[0].warn_rise, 0.005);
   const auto built = io::buildScene<2>(c);
   ASSERT_EQ(built.packing_probes.size(), 2u);
   EXPECT_EQ(built.packing_probe_names[0], "bulk");
   EXPECT_DOUBLE_EQ(built.packing_probes[0].spacing, 0.618 * c.dx);
   EXPECT_DOUBLE_EQ(built.packing_probes[1].upper[1], 0.2);
+  EXPECT_DOUBLE_EQ(built.packing_warn_rises.at(0), 0.005);
   EXPECT_EQ(io::resolvedSceneYaml(io::loadSceneText(io::resolvedSceneYaml(c), "r.yaml")), io::resolvedSceneYaml(c));
   const std::string upside = errorOf(std::string(kBase) + "packing_probes:\n  - {lower: [0.1, 0.1], upper: [0.2, 0.05]}\n");
   EXPECT_NE(upside.find("'packing_probes[0].upper': each coordinate must exceed lower's"), std::string::npos) << upside;
@@ -575,6 +577,9 @@ TEST(SceneLoader, PackingProbes) {
   const std::string many =
       errorOf(std::string(kBase) + "packing_probes:\n  - {lower: [0, 0], upper: [0.2, 0.2], spacing: 1e-5}\n");
   EXPECT_NE(many.find("more than 1e7 grid points"), std::string::npos) << many;
+  const std::string rise =
+      errorOf(std::string(kBase) + "packing_probes:\n  - {lower: [0, 0], upper: [0.2, 0.2], warn_rise: -0.01}\n");
+  EXPECT_NE(rise.find("'packing_probes[0].warn_rise'"), std::string::npos) << rise;
 }
 
 // A water block fills whole spacings: one whose size is not a multiple of dx stops short

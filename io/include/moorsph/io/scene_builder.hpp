@@ -27,6 +27,7 @@ struct BuiltScene {
   std::vector<fluid::VelocityProbeSpec<D>> velocity_probes;
   std::vector<std::string> packing_probe_names;
   std::vector<fluid::PackingProbeSpec<D>> packing_probes;
+  std::vector<double> packing_warn_rises;  ///< per packing probe: rise of xi the log notes, 0 = none
   std::size_t piston_surface = 0;  ///< index of the piston's surface, if the scene has one
   /// Per body of the scene (in order): its surface, movable and reaction-tracking,
   /// with its reference point at the body's start position.

@@ -165,6 +165,7 @@ struct PackingProbeConfig {
   Triple upper{0.0, 0.0, 0.0};  ///< [m]
   double spacing = 0.0;         ///< grid spacing [m]; 0: 0.618 dx (off the start lattice)
   double min_fill = 0.5;        ///< xi below which a point is dry (left out)
+  double warn_rise = 0.005;     ///< the run's log notes the mean rising this far above its first reading; 0: never
 };
 
 /// A rigid body's surface, in the body frame (origin = the body's reference point).
