@@ -45,12 +45,9 @@ class SceneSeries {
     probe_names_ = built.probe_names;
     for (const auto& v : built.velocity_probes) velocity_probes_.emplace_back(v);
     velocity_probe_names_ = built.velocity_probe_names;
-    for (std::size_t k = 0; k < built.packing_probes.size(); ++k) {
-      packing_probes_.emplace_back(built.packing_probes[k]);
-      const double rise = k < built.packing_warn_rises.size() ? built.packing_warn_rises[k] : 0.0;
-      packing_watch_.push_back({std::numeric_limits<double>::quiet_NaN(), rise, false});
-    }
-    packing_probe_names_ = built.packing_probe_names;
+    for (std::size_t k = 0; k < built.packing_probes.size(); ++k)
+      packing_.push_back({built.packing_probe_names[k], fluid::PackingProbe<D>(built.packing_probes[k]),
+                          built.packing_warn_rises[k], std::numeric_limits<double>::quiet_NaN(), false});
     for (std::size_t k = 0; k < built.probes.size(); ++k) {
       const double window = k < built.probe_means.size() ? built.probe_means[k] : 0.0;
       means_.push_back({MovingMean(window), MovingMean(window), window > 0.0});
@@ -138,23 +135,23 @@ class SceneSeries {
                          "velocity probes: SPH-interpolated (Shepard) fluid velocity at a fixed point; NaN where the "
                          "particle density there is below min_fill (dry)");
     }
-    if (!packing_probes_.empty()) attachPacking(recorder);
+    if (!packing_.empty()) attachPacking(recorder);
   }
 
  private:
   void attachPacking(cases::RunRecorder<D>& recorder) {
     std::vector<io::SeriesColumn> columns;
-    for (const auto& n : packing_probe_names_) {
-      columns.push_back({n + "_xi_mean", "1"});
-      columns.push_back({n + "_xi_spread", "1"});
-      columns.push_back({n + "_wet_fraction", "1"});
+    for (const auto& p : packing_) {
+      columns.push_back({p.name + "_xi_mean", "1"});
+      columns.push_back({p.name + "_xi_spread", "1"});
+      columns.push_back({p.name + "_wet_fraction", "1"});
     }
     recorder.addSeries("packing_probes", columns,
                        [this](const fluid::FluidSimulation<D>& s) {
                          std::vector<double> v;
-                         for (std::size_t k = 0; k < packing_probes_.size(); ++k) {
-                           const fluid::PackingReading r = packing_probes_[k].read(s);
-                           watchPacking(k, r.mean, s.time());
+                         for (auto& p : packing_) {
+                           const fluid::PackingReading r = p.probe.read(s);
+                           watchPacking(p, r.mean, s.time());
                            v.insert(v.end(), {r.mean, r.spread, r.wet_fraction});
                          }
                          return v;
@@ -168,8 +165,8 @@ class SceneSeries {
   /// Notes once when a probe's mean xi has risen `rise` above its first reading: the
   /// particles pack closer than their densities say, and the surface sits low
   /// (docs/scene-reference.md, packing_probes).
-  void watchPacking(std::size_t k, double mean, double time) {
-    PackingWatch& w = packing_watch_[k];
+  struct Packing;
+  void watchPacking(Packing& w, double mean, double time) {
     if (std::isnan(w.first)) w.first = mean;
     if (w.noted || !(w.rise > 0.0) || !(mean - w.first >= w.rise) || !note_) return;
     w.noted = true;
@@ -178,7 +175,7 @@ class SceneSeries {
                   "note: packing probe '%s': mean xi %.4f at t = %.6g s, %.2f%% above its first reading %.4f: the "
                   "particles pack closer than their densities say, so water levels and floating bodies nearby read low "
                   "by about the water depth x %.4f",
-                  packing_probe_names_[k].c_str(), mean, time, 100.0 * (mean - w.first), w.first, mean - w.first);
+                  w.name.c_str(), mean, time, 100.0 * (mean - w.first), w.first, mean - w.first);
     note_(text);
   }
 
@@ -192,14 +189,14 @@ class SceneSeries {
   std::vector<fluid::PressureProbe<D>> probes_;
   std::vector<std::string> velocity_probe_names_;
   std::vector<fluid::VelocityProbe<D>> velocity_probes_;
-  std::vector<std::string> packing_probe_names_;
-  std::vector<fluid::PackingProbe<D>> packing_probes_;
-  struct PackingWatch {
+  struct Packing {
+    std::string name;
+    fluid::PackingProbe<D> probe;
+    double rise;   ///< rise of the mean that the log notes; 0: never
     double first;  ///< the run's first reading (NaN before it)
-    double rise;   ///< rise that is noted; 0: never
     bool noted;
   };
-  std::vector<PackingWatch> packing_watch_;
+  std::vector<Packing> packing_;
   struct Means {
     MovingMean reaction, interpolated;
     bool on;
