@@ -54,7 +54,7 @@ def analyse(t, x, v, rest, release):
 
 
 def main():
-    args = [a for a in sys.argv[1:]]
+    args = list(sys.argv[1:])
     rest, release = 0.746, 0.3
     for flag in ("--rest", "--release"):
         if flag in args:

@@ -143,7 +143,7 @@ TEST(RunOutput, PistonSeriesRecordsPlateMotionForceAndWork) {
   // depth <z> = 0.165 m and c = 10 sqrt(2 g 0.3). Then the waves must not pack the
   // particles: the kernel sum stays at 1 to the few tenths of a percent the density
   // variations allow, and the box stays wet. (Measured: 0.99727 at the start, 0.9973-0.9995
-  // over 1.2 s, and 0.9994-1.0003 from 0.8 to 6 s in the full scene.)
+  // over 1.2 s, and 0.9991-0.9996 from 0.8 to 6 s in the full scene.)
   const auto packing = exportedSeries(o.out, "packing_probes.bulk_xi_mean");
   const auto wet = exportedSeries(o.out, "packing_probes.bulk_wet_fraction");
   ASSERT_EQ(packing.time.size(), v.time.size());
