@@ -7,8 +7,17 @@ includes, so each variant is a full file; rerun this after editing the base):
 Every variant keeps the base's comments on the ship, the frames and the economies; the lines
 that differ are listed in its header. Depth changes move everything tied to the surface (the
 ship, the anchors 175 m below it, the piston and wall tops, the gauges' tops, the domain).
+
+With `--restart-variants-at DX FAR_WALL_X OUT_DIR` it also writes the restart variants
+(k3e6, mass130, mass200, catenary, lumped) at spacing DX into OUT_DIR, with the files they
+name (piston table, hull mesh, deck outline), to continue from a checkpoint of ship_dx6.yaml
+(DX 6, FAR_WALL_X 696) or another spacing's base:
+
+    /usr/bin/python3 make_variants.py --restart-variants-at 6 696 runs/variants_dx6
 """
-import re
+import os
+import shutil
+import sys
 
 BASE = open("ship_base.yaml").read()
 BODY = BASE[BASE.index("dim: 3"):]
@@ -20,20 +29,22 @@ def replace(text, old, new, count=1):
     return text.replace(old, new)
 
 
-def deepen(text, dd):
-    """Water dd metres deeper: shift everything tied to the still level."""
+def deepen(text, dd, tall=False, far_wall_x=700):
+    """Water dd metres deeper: shift everything tied to the still level. tall: the order-2
+    breather's headroom (domain, walls and piston 20 m, 20 m and 15 m higher)."""
     d = 132 + dd
-    text = replace(text, "upper: [720, 210, 72]", f"upper: [720, {210 + dd + (20 if dd == 28 else 0)}, 72]")
-    text = replace(text, "upper: [720, 172, 72]", f"upper: [720, {172 + dd + (20 if dd == 28 else 0)}, 72]")
-    text = replace(text, "upper: [700, 132, 72], packed: true}   # d = 132 m", f"upper: [700, {d}, 72], packed: true}}   # d = {d} m")
+    x = f"{far_wall_x:g}"
+    text = replace(text, "upper: [720, 210, 72]", f"upper: [720, {210 + dd + (20 if tall else 0)}, 72]")
+    text = replace(text, "upper: [720, 172, 72]", f"upper: [720, {172 + dd + (20 if tall else 0)}, 72]")
+    text = replace(text, f"upper: [{x}, 132, 72], packed: true}}   # d = 132 m", f"upper: [{x}, {d}, 72], packed: true}}   # d = {d} m")
     text = replace(text, "top: 157                      # [m]: 25 m above the still level",
-                   f"top: {157 + dd + (15 if dd == 28 else 0)}                      # [m]: {25 + (15 if dd == 28 else 0)} m above the still level")
+                   f"top: {157 + dd + (15 if tall else 0)}                      # [m]: {25 + (15 if tall else 0)} m above the still level")
     text = replace(text, "position: [177.9, 119.3117, 36.0]", f"position: [177.9, {119.3117 + dd:.4f}, 36.0]")
     text = replace(text, "(120 m = 132 - 12 if level at T = 12 m)", f"(d - 12 m if level at T = 12 m)")
     text = replace(text, "(y = 132 - 175 = -43 m)", f"(y = {d} - 175 = {d - 175} m)")
     for y in ("-43, 36]", "-43, 1]", "-43, 71]"):
         text = replace(text, y, y.replace("-43", str(d - 175)))
-    text = text.replace("top: 200}", f"top: {200 + dd + (20 if dd == 28 else 0)}}}")
+    text = text.replace("top: 200}", f"top: {200 + dd + (20 if tall else 0)}}}")
     return text
 
 
@@ -44,7 +55,8 @@ def write(name, header, body):
     print(f"wrote {name}.yaml")
 
 
-RESTART = """#
+RESTART = """
+#
 # A restart variant: run ship_base.yaml to 265 s, then continue from its checkpoint with this
 # file (same particles: geometry, resolution and piston are those of the base, and
 # `moorsph run --restart` rejects a scene that differs there; a restart may change a body's
@@ -83,11 +95,12 @@ for factor, name in ((1.3, "ship_mass130"), (2.0, "ship_mass200")):
 # (the restart keeps the particles); from 265 s the heavier ship sinks toward its new draught
 # (about {(factor - 1) * 52196 / 1e3 * 0.137 / 1:.1f} m deeper at 0.137 m per 1000 t, less the cables' give) while the waves arrive.""" + RESTART.replace("{name}", name), body)
 
-def at_spacing(dx, far_wall_x):
-    """The base at spacing dx, its far wall (and the water, floor and damping zone's end) moved
-    to far_wall_x, a multiple of dx: a fill that stopped short of the wall would leave a gap
-    that lowers the still level (0.75 m for a 4 m gap)."""
-    body = replace(BODY, "dx: 4.0                       # [m]", f"dx: {dx:.1f}                       # [m]")
+def at_spacing(dx, far_wall_x, body=BODY):
+    """The base (or a variant of it at the base's depth) at spacing dx, its far wall (and the
+    water, floor and damping zone's end) moved to far_wall_x, a multiple of dx: a fill that
+    stopped short of the wall would leave a gap that lowers the still level (0.75 m for a 4 m
+    gap)."""
+    body = replace(body, "dx: 4.0                       # [m]", f"dx: {dx:.1f}                       # [m]")
     x = f"{far_wall_x:g}"
     body = replace(body, "upper: [700, 0, 72]", f"upper: [{x}, 0, 72]")
     body = replace(body, "lower: [700, -20, 0], upper: [720, 172, 72]", f"lower: [{x}, -20, 0], upper: [720, 172, 72]")
@@ -124,11 +137,14 @@ write("ship_dx3", """# METHOD.md 6.5 variant: dx = 3 m, from t = 0: the finest o
 
 # Doubled carrier wavelength: k0 = 0.0066667 1/m (942 m, period 24.6 s), a0 = 4.5 m kept
 # (the 9 m background sea), so a0 k0 = 0.03; k0 d >= 1.75 needs d = 264 m.
-body = deepen(BODY, 132)
-body = replace(body, "signal_order1.csv", "signal_order1_long.csv")
-body = replace(body, "(0.38 carrier wavelengths)", "(0.19 carrier wavelengths: little absorption)")
-body = replace(body, "k_max: 1.0}   # [1/s], about 3 omega0", "k_max: 0.75}  # [1/s], about 3 omega0")
-write("ship_long", """# METHOD.md 6.5 variant: doubled carrier wavelength, from t = 0. k0 = 0.0066667 1/m
+def long_carrier(body, far_wall_x=700):
+    body = deepen(body, 132, far_wall_x=far_wall_x)
+    body = replace(body, "signal_order1.csv", "signal_order1_long.csv")
+    body = replace(body, "(0.38 carrier wavelengths)", "(0.19 carrier wavelengths: little absorption)")
+    return replace(body, "k_max: 1.0}   # [1/s], about 3 omega0", "k_max: 0.75}  # [1/s], about 3 omega0")
+
+
+LONG_HEADER = """# METHOD.md 6.5 variant: doubled carrier wavelength, from t = 0. k0 = 0.0066667 1/m
 # (wavelength 942 m, period 24.6 s); a0 = 4.5 m is kept (the 9 m background sea), so the
 # carrier steepness halves to a0 k0 = 0.03 and the breather's envelope is 4x longer. The
 # depth for k0 d >= 1.75 doubles to d = 264 m (about twice the particles, and c_s = 10
@@ -137,14 +153,25 @@ write("ship_long", """# METHOD.md 6.5 variant: doubled carrier wavelength, from 
 # reflections from the far wall to reach the ship.
 #   moorsph_breather_signal --order 1 --a0 4.5 --k0 0.0066667 --focus-distance 200 \\
 #     --focus-time 300 --depth 264 --still 30 --ramp 75 --duration 420 --out signal_order1_long.csv
-#
-# Otherwise as ship_base.yaml (the ship, frames, economies and sensors are described there).""", body)
+"""
+OTHERWISE = """#
+# Otherwise as ship_base.yaml (the ship, frames, economies and sensors are described there)."""
+AT_6M = """#
+# At dx = 6 m (as ship_dx6.yaml: far wall at x = 696 m, damping zone 520-696 m), the spacing
+# at which this full-length variant fits in a session on 2 cores."""
+write("ship_long", LONG_HEADER + OTHERWISE, long_carrier(BODY))
+write("ship_long_dx6", LONG_HEADER + AT_6M + "\n" + OTHERWISE, long_carrier(at_spacing(6.0, 696), 696))
 
-# Order-2 breather: a0 = 4.5 m, a0 k0 = 0.05 -> k0 = 0.011111 1/m (566 m, 19.0 s), d = 160 m.
-body = deepen(BODY, 28)
-body = replace(body, "signal_order1.csv", "signal_order2.csv")
-body = replace(body, "headroom for the 13.5 m crest and spray", "headroom for the 22.5 m crest and spray")
-write("ship_order2", """# METHOD.md 6.5 variant: second-order Peregrine breather (amplification 5: a 22.5 m crest,
+
+# Order-2 breather: a0 = 4.5 m, a0 k0 = 0.05 -> k0 = 0.011111 1/m (566 m, 19.0 s), d = 160 m
+# (162 m at dx = 6 m, which does not divide 160 m; its piston table is made for that depth).
+def order2(body, dd=28, far_wall_x=700, signal="signal_order2.csv"):
+    body = deepen(body, dd, tall=True, far_wall_x=far_wall_x)
+    body = replace(body, "signal_order1.csv", signal)
+    return replace(body, "headroom for the 13.5 m crest and spray", "headroom for the 22.5 m crest and spray")
+
+
+ORDER2_HEADER = """# METHOD.md 6.5 variant: second-order Peregrine breather (amplification 5: a 22.5 m crest,
 # 42+ m from trough to crest), a0 = 4.5 m, a0 k0 = 0.05, k0 = 0.011111 1/m (wavelength
 # 566 m, period 19.0 s), focused 200 m from the piston at 300 s, from t = 0. k0 d >= 1.75
 # needs d = 160 m (k0 d = 1.778). The crest tops the deck (23.5 - 12.2 = 11.3 m freeboard):
@@ -152,8 +179,15 @@ write("ship_order2", """# METHOD.md 6.5 variant: second-order Peregrine breather
 # are raised for the higher crest.
 #   moorsph_breather_signal --order 2 --a0 4.5 --k0 0.011111 --focus-distance 200 \\
 #     --focus-time 300 --depth 160 --still 30 --ramp 60 --duration 420 --out signal_order2.csv
-#
-# Otherwise as ship_base.yaml (the ship, frames, economies and sensors are described there).""", body)
+"""
+write("ship_order2", ORDER2_HEADER + OTHERWISE, order2(BODY))
+write("ship_order2_dx6", ORDER2_HEADER + AT_6M + """
+# 6 m does not divide 160 m, so the water is 162 m deep (k0 d = 1.800), everything tied to
+# the still level stands 2 m higher than in ship_order2.yaml, and the piston's table is made
+# for that depth:
+#   moorsph_breather_signal --order 2 --a0 4.5 --k0 0.011111 --focus-distance 200 \\
+#     --focus-time 300 --depth 162 --still 30 --ramp 60 --duration 420 --out signal_order2_d162.csv
+""" + OTHERWISE, order2(at_spacing(6.0, 696), 30, 696, "signal_order2_d162.csv"))
 
 # Elastic catenary lines: the same cables with weight. EA = k L0 = 1.7e6 x 157.1 = 2.6707e8 N
 # so the elastic stiffness EA / L0 is the base's k.
@@ -195,5 +229,22 @@ write("ship_lumped", """# METHOD.md 6.5 variant: the three cables as dynamic lum
 # 20 segments, 45 kg/m in air, EA = 2.6707e8 N = k L0, normal drag 1.2 and added mass 1.0 on
 # the 90 mm diameter, in still water) instead of massless tension-only springs. Their
 # inertia and drag are what the quasi-static models lack: the snap when a slack line comes
-# taut. The lines are not in the SPH fluid.
-""" + RESTART.format(name="ship_lumped"), lumped)
+# taut. The lines are not in the SPH fluid.""" + RESTART.format(name="ship_lumped"), lumped)
+
+
+RESTART_VARIANTS = ("ship_k3e6", "ship_mass130", "ship_mass200", "ship_catenary", "ship_lumped")
+if len(sys.argv) == 5 and sys.argv[1] == "--restart-variants-at":
+    dx, far_wall_x, out = float(sys.argv[2]), float(sys.argv[3]), sys.argv[4]
+    os.makedirs(out, exist_ok=True)
+    for name in RESTART_VARIANTS:
+        text = open(f"{name}.yaml").read()
+        header, body = text[:text.index("dim: 3")], text[text.index("dim: 3"):]
+        body = replace(at_spacing(dx, far_wall_x, body), f"name: {name}", f"name: {name}_dx{dx:g}")
+        with open(os.path.join(out, f"{name}_dx{dx:g}.yaml"), "w") as f:
+            f.write(header + f"# Written by make_variants.py --restart-variants-at {dx:g} {far_wall_x:g}: this variant at\n"
+                    f"# dx = {dx:g} m, to restart from a checkpoint of the base at that spacing.\n" + body)
+    for used in ("signal_order1.csv", "hull_blunt.stl", "hull_deck.csv"):  # the files the scenes name
+        shutil.copy(used, out)
+    print(f"wrote {len(RESTART_VARIANTS)} restart variants at dx = {dx:g} m to {out}")
+elif len(sys.argv) > 1:
+    raise SystemExit(__doc__)
