@@ -48,6 +48,11 @@ class PointSet {
     addNormal(k, normal);
   }
   const Eigen::Vector3d& point(int k) const { return points_[k]; }
+  /// Whether point k carries a normal within 30 degrees of `normal`.
+  bool carries(int k, const Eigen::Vector3d& normal) const {
+    return std::any_of(groups_[k].begin(), groups_[k].end(),
+                       [&normal](const Eigen::Vector3d& g) { return g.normalized().dot(normal) > kSameGroupCos; });
+  }
 
   /// Join `normal` to the group within 30 degrees, or start a new group (a sharp edge).
   void addNormal(int k, const Eigen::Vector3d& normal) {
@@ -89,6 +94,9 @@ class PointSet {
 // those closer than kMergeFraction x spacing add their face normal to it.
 constexpr double kAcceptFraction = 0.75;
 constexpr double kMergeFraction = 0.25;
+// A sharp edge's point that only another sharp edge's particles exclude (a face narrower
+// than kAcceptFraction x spacing between the two edges) is kept down to this distance.
+constexpr double kEdgeAcceptFraction = 0.5;
 
 int steps(double length, double spacing) { return std::max(1, static_cast<int>(std::ceil(length / spacing - 1e-9))); }
 
@@ -154,18 +162,26 @@ fluid::BoundaryParticles<3> sampleMeshSurface(const TriangleMesh& mesh, double s
   };
   // Sharp edges first, each point with both faces' normals (mesh_sampling.hpp), and
   // before them the corners where they meet, so that an edge's end is not taken by a
-  // particle of the other edge without this edge's normals.
+  // particle of the other edge without this edge's normals. Where another edge's
+  // particle (lacking this edge's normals) is what excludes a point, the point is kept
+  // down to kEdgeAcceptFraction x spacing: across a face narrower than 0.75 spacing
+  // (the ship's bow cut at dx = 6 m) the second edge would otherwise have no particle
+  // with both normals, and fluid went into the hull there (docs/validation/ship.md).
+  const double edge_accept = kEdgeAcceptFraction * spacing;
+  auto offerEdgePoint = [&](const Eigen::Vector3d& q, const Eigen::Vector3d& n1, const Eigen::Vector3d& n2) {
+    const int near = set.find(q, accept);
+    const bool other_edge = near >= 0 && !(set.carries(near, n1) && set.carries(near, n2));
+    if (other_edge && set.find(q, edge_accept) < 0) set.add(q, n1);
+    offer(q, n1);
+    offer(q, n2);
+  };
   const auto edges = sharpEdges(mesh);
   for (const auto& [corner, normals] : corners(edges))
     for (const auto& n : normals) offer(corner, n);
   for (const double fraction : {1.0, 0.5, 0.25})
     for (const auto& e : edges) {
       const int n = steps((e.b - e.a).norm(), fraction * spacing);
-      for (int k = 0; k <= n; ++k) {
-        const Eigen::Vector3d q = e.a + (static_cast<double>(k) / n) * (e.b - e.a);
-        offer(q, e.n1);
-        offer(q, e.n2);
-      }
+      for (int k = 0; k <= n; ++k) offerEdgePoint(e.a + (static_cast<double>(k) / n) * (e.b - e.a), e.n1, e.n2);
     }
   // Then candidates in three passes: vertices, the coarse lattices (steps <= spacing; a box
   // gives exactly its lattice), then fine lattices (steps <= spacing/2) that fill what
