@@ -22,10 +22,10 @@
 // equal steps not longer than spacing, then spacing/2 and spacing/4: no point of a sharp
 // edge is then farther than 0.875 spacing (spacing/8 to a candidate, 0.75 spacing from
 // it to the particle that excluded it) from a particle with both normals. An edge point
-// that only another sharp edge's particles exclude (a face narrower than 0.75 spacing
-// between the two edges) is kept down to 0.5 spacing from them, so that both edges are
-// covered; where edges meet at a corner the test on the ship's hull measures up to 0.86
-// spacing. Until session 39 the second edge of a narrow face stayed bare (1.02 spacing at
+// whose nearest particle lacks one of its edge's normals (another sharp edge's particle,
+// across a face narrower than 0.75 spacing) is kept down to 0.5 spacing from it, so that
+// both edges are covered; where edges meet at a corner the test on the ship's hull
+// measures up to 0.86 spacing. Until session 39 the second edge of a narrow face stayed bare (1.02 spacing at
 // the ship's 4 m wide bow cut at dx = 6 m), and fluid went into the bow there. Without
 // this pass an edge got such particles only where a vertex or lattice point of both
 // faces happened to fall on it: a face's interior vertex near the edge could take its
