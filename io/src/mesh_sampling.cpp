@@ -94,8 +94,9 @@ class PointSet {
 // those closer than kMergeFraction x spacing add their face normal to it.
 constexpr double kAcceptFraction = 0.75;
 constexpr double kMergeFraction = 0.25;
-// A sharp edge's point that only another sharp edge's particles exclude (a face narrower
-// than kAcceptFraction x spacing between the two edges) is kept down to this distance.
+// A sharp edge's point whose nearest particle lacks one of the edge's normals (another
+// sharp edge's particle, across a face narrower than kAcceptFraction x spacing) is kept
+// down to this distance from it.
 constexpr double kEdgeAcceptFraction = 0.5;
 
 int steps(double length, double spacing) { return std::max(1, static_cast<int>(std::ceil(length / spacing - 1e-9))); }
