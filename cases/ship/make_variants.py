@@ -19,8 +19,13 @@ import os
 import shutil
 import sys
 
-BASE = open("ship_base.yaml").read()
-BODY = BASE[BASE.index("dim: 3"):]
+def split_header(text):
+    """A scene file's comment header and its body (from `dim: 3` on)."""
+    i = text.index("dim: 3")
+    return text[:i], text[i:]
+
+
+BODY = split_header(open("ship_base.yaml").read())[1]
 
 
 def replace(text, old, new, count=1):
@@ -237,8 +242,7 @@ if len(sys.argv) == 5 and sys.argv[1] == "--restart-variants-at":
     dx, far_wall_x, out = float(sys.argv[2]), float(sys.argv[3]), sys.argv[4]
     os.makedirs(out, exist_ok=True)
     for name in RESTART_VARIANTS:
-        text = open(f"{name}.yaml").read()
-        header, body = text[:text.index("dim: 3")], text[text.index("dim: 3"):]
+        header, body = split_header(open(f"{name}.yaml").read())
         body = replace(at_spacing(dx, far_wall_x, body), f"name: {name}", f"name: {name}_dx{dx:g}")
         with open(os.path.join(out, f"{name}_dx{dx:g}.yaml"), "w") as f:
             f.write(header + f"# Written by make_variants.py --restart-variants-at {dx:g} {far_wall_x:g}: this variant at\n"
