@@ -250,16 +250,20 @@ void FluidSimulation<D>::removeOutflow() {
   rebuild_requested_ = true;
 }
 
-// Runtime guards (run_guard.hpp): one O(N) pass finds the first particle that is
-// non-finite, outside the domain or at rho <= 0; then the step just taken is compared
-// with the CFL step. Either stops the run with the particle, time and likely cause named.
+// Runtime guards (run_guard.hpp): the step just taken is compared with the CFL step,
+// then one O(N) pass finds the first particle that is non-finite, outside the domain,
+// at rho <= 0 or faster than max_speed_fraction x c_s. Either stops the run with the
+// particle, time and likely cause named. The step is checked first because a collapsed
+// step is the cause of what it flings: the squeezed particle's neighbours leave it at
+// more than c_s (tests/stability/test_run_guards.cpp).
 template <int D>
 void FluidSimulation<D>::checkHealth() const {
   const GuardContext<D> ctx{setup_, walls_, time_, steps_};
-  const std::size_t bad = findUnhealthyParticle(fluid_, setup_.domain);
-  if (bad < fluid_.size()) throw SimulationError(describeUnhealthyParticle(fluid_, bad, ctx));
   if (dt_ < setup_.method.min_dt_fraction * cfl_dt_)
     throw SimulationError(describeDtCollapse(fluid_, dt_, cfl_dt_, ctx));
+  const double max_speed = setup_.method.max_speed_fraction * setup_.sound_speed;
+  const std::size_t bad = findUnhealthyParticle(fluid_, setup_.domain, max_speed);
+  if (bad < fluid_.size()) throw SimulationError(describeUnhealthyParticle(fluid_, bad, ctx));
 }
 
 template <int D>

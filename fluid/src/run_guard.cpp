@@ -19,9 +19,12 @@ bool finiteState(const FluidParticles<D>& f, std::size_t i) {
 }
 
 /// The boundary surface nearest to r (brute force: only called when a run fails).
+/// `behind`: r lies behind every normal of the nearest boundary particle, so inside a
+/// body or beyond a wall (in front of any one of an edge particle's faces is outside).
 struct NearestSurface {
   std::string name;
   double distance = std::numeric_limits<double>::infinity();
+  bool behind = false;
 };
 
 template <int D>
@@ -37,7 +40,11 @@ NearestSurface nearestSurface(const Walls<D>* walls, const Vec<D>& r) {
       best = k;
     }
   }
-  if (best < b.size()) out.name = walls->surfaces()[b.surface[best]].name;
+  if (best == b.size()) return out;
+  out.name = walls->surfaces()[b.surface[best]].name;
+  out.behind = true;
+  for (std::uint32_t n = b.normal_begin[best]; n < b.normal_begin[best + 1]; ++n)
+    if ((r - b.r[best]).dot(b.normals[n]) >= 0.0) out.behind = false;
   return out;
 }
 
@@ -67,12 +74,22 @@ void describeParticle(std::ostream& os, const FluidParticles<D>& f, std::size_t 
   if (!s.name.empty()) os << "; nearest boundary surface '" << s.name << "' at " << s.distance << " m";
 }
 
+/// Names a body or piston moving faster than c_s/10 as the cause; false if none does.
+template <int D>
+bool movingSurfaceTooFast(std::ostream& os, const GuardContext<D>& ctx) {
+  const double limit = kDesignMach * ctx.setup.sound_speed;
+  const double wall_speed = ctx.walls ? ctx.walls->maxMovingSpeed() : 0.0;
+  if (wall_speed <= limit) return false;
+  os << "a moving surface (a body or piston) moves at " << wall_speed << " m/s, faster than c_s/10 = " << limit
+     << " m/s; raise sound_speed or slow the body";
+  return true;
+}
+
 /// Likely cause of a particle found behind or beyond a wall.
 template <int D>
 void causeOfEscape(std::ostream& os, const FluidParticles<D>& f, std::size_t i, const GuardContext<D>& ctx) {
   const double c = ctx.setup.sound_speed;
   const double speed = f.v[i].norm();
-  const double wall_speed = ctx.walls ? ctx.walls->maxMovingSpeed() : 0.0;
   const NearestSurface s = nearestSurface(ctx.walls, f.r[i]);
   const std::string wall = s.name.empty() ? "a wall" : "surface '" + s.name + "'";
   // Over the walls (above the top of the static wall on the side it left by, or above
@@ -101,23 +118,47 @@ void causeOfEscape(std::ostream& os, const FluidParticles<D>& f, std::size_t i, 
     os << "its speed " << speed << " m/s exceeds c_s/10 = " << kDesignMach * c
        << " m/s, beyond what the wall force (scaled by c_s^2) can stop; raise sound_speed to at least 10x the "
           "largest flow speed";
-  else if (wall_speed > kDesignMach * c)
-    os << "a moving surface (a body or piston) moves at " << wall_speed << " m/s, faster than c_s/10 = "
-       << kDesignMach * c << " m/s; raise sound_speed or slow the body";
-  else
+  else if (!movingSurfaceTooFast(os, ctx))
     os << "boundary particles sparser than the fluid spacing dx = " << ctx.setup.dx
        << " m (check the boundary spacing of the surface) or a thin wall crossed at a corner";
+}
+
+/// Likely cause of a particle faster than the guard's limit. The position at the start
+/// of the step is tested too: a particle thrown out from behind a surface may already be
+/// back in front of it.
+template <int D>
+void causeOfSpeed(std::ostream& os, const FluidParticles<D>& f, std::size_t i, const GuardContext<D>& ctx) {
+  const double c = ctx.setup.sound_speed;
+  const NearestSurface now = nearestSurface(ctx.walls, f.r[i]);
+  const NearestSurface before =
+      f.r_start.size() == f.size() ? nearestSurface(ctx.walls, f.r_start[i]) : NearestSurface{};
+  os << ". Likely cause: ";
+  if (now.behind || before.behind) {
+    const NearestSurface& s = now.behind ? now : before;
+    os << "the particle " << (now.behind ? "is" : "was, at the start of the step,") << " behind surface '" << s.name
+       << "' (" << s.distance / ctx.setup.dx
+       << " dx from its nearest boundary particle): it got through a gap in that surface's boundary particles (a "
+          "sharp edge with no particle carrying both faces' normals, a face narrower than the boundary spacing, or a "
+          "spacing coarser than dx) and the wall force threw it out; check the surface's sampling there or refine dx";
+  } else if (!movingSurfaceTooFast(os, ctx)) {
+    os << "the flow is far beyond the weakly-compressible range (built for c_s/10 = " << kDesignMach * c
+       << " m/s): raise sound_speed to at least 10x the largest physical flow speed, enable density_diffusion or "
+          "lower the cfl";
+  }
 }
 
 }  // namespace
 
 template <int D>
-std::size_t findUnhealthyParticle(const FluidParticles<D>& f, const Domain<D>& domain) {
+std::size_t findUnhealthyParticle(const FluidParticles<D>& f, const Domain<D>& domain, double max_speed) {
   const std::size_t n = f.size();
+  // 0 disables the speed limit; the squared limit keeps the loop free of square roots.
+  const double v2_max = max_speed > 0.0 ? max_speed * max_speed : std::numeric_limits<double>::infinity();
   std::size_t bad = n;
 #pragma omp parallel for schedule(static) reduction(min : bad)
   for (std::size_t i = 0; i < n; ++i) {
-    if (!finiteState(f, i) || !domain.contains(f.r[i]) || !(f.rho[i] > 0.0)) bad = std::min(bad, i);
+    if (!finiteState(f, i) || !domain.contains(f.r[i]) || !(f.rho[i] > 0.0) || f.v[i].squaredNorm() > v2_max)
+      bad = std::min(bad, i);
   }
   return bad;
 }
@@ -152,12 +193,17 @@ std::string describeUnhealthyParticle(const FluidParticles<D>& f, std::size_t i,
     describeParticle(os, f, i, ctx);
     os << "; domain (" << domain.lower.transpose() << ") .. (" << domain.upper.transpose() << ") m";
     causeOfEscape(os, f, i, ctx);
-  } else {
+  } else if (!(f.rho[i] > 0.0)) {
     os << "non-positive fluid density";
     describeParticle(os, f, i, ctx);
     os << ". Likely cause: the fluid there is in tension (a splash sheet or a free surface pulled apart): the "
           "continuity equation drove rho through zero. Enable density_diffusion (method option), which removes the "
           "density noise that starts it, or refine dx";
+  } else {
+    os << "fluid particle faster than method.max_speed_fraction = " << ctx.setup.method.max_speed_fraction
+       << " of c_s";
+    describeParticle(os, f, i, ctx);
+    causeOfSpeed(os, f, i, ctx);
   }
   return os.str();
 }
@@ -192,8 +238,8 @@ std::string describeDtCollapse(const FluidParticles<D>& f, double dt, double cfl
   return os.str();
 }
 
-template std::size_t findUnhealthyParticle<2>(const FluidParticles<2>&, const Domain<2>&);
-template std::size_t findUnhealthyParticle<3>(const FluidParticles<3>&, const Domain<3>&);
+template std::size_t findUnhealthyParticle<2>(const FluidParticles<2>&, const Domain<2>&, double);
+template std::size_t findUnhealthyParticle<3>(const FluidParticles<3>&, const Domain<3>&, double);
 template std::size_t findLargestAcceleration<2>(const FluidParticles<2>&);
 template std::size_t findLargestAcceleration<3>(const FluidParticles<3>&);
 template std::string describeUnhealthyParticle<2>(const FluidParticles<2>&, std::size_t, const GuardContext<2>&);

@@ -368,9 +368,15 @@ TEST(SceneLoader, ParticleShiftingAndTheStepGuard) {
   EXPECT_TRUE(built.scene.setup.has("particle_shifting"));
 
   // The guard alone is not a method option.
-  const auto guard = io::loadSceneText(std::string(kBase) + "method:\n  min_dt_fraction: 0\n", "s.yaml");
+  const auto guard =
+      io::loadSceneText(std::string(kBase) + "method:\n  min_dt_fraction: 0\n  max_speed_fraction: 0.8\n", "s.yaml");
   EXPECT_EQ(guard.method.name, "reference");
   EXPECT_EQ(guard.method.min_dt_fraction, 0.0);
+  EXPECT_EQ(guard.method.max_speed_fraction, 0.8);
+  EXPECT_EQ(io::loadSceneText(io::resolvedSceneYaml(guard), "resolved.yaml").method.max_speed_fraction, 0.8);
+  EXPECT_EQ(c.method.max_speed_fraction, 0.5);
+  const std::string speed = errorOf(std::string(kBase) + "method:\n  max_speed_fraction: -1\n");
+  EXPECT_NE(speed.find("'method.max_speed_fraction'"), std::string::npos) << speed;
 
   const std::string cap = errorOf(std::string(kBase) + "method:\n  particle_shifting: {cap: 2}\n");
   EXPECT_NE(cap.find("'method.particle_shifting.cap'"), std::string::npos) << cap;

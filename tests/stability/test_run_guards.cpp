@@ -3,7 +3,9 @@
 // wrong, the particle (or body), the time and the likely cause.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <string>
 #include <moorsph/fluid/fluid_simulation.hpp>
@@ -45,10 +47,12 @@ bool has(const std::string& message, const std::string& part) { return message.f
 
 }  // namespace
 
-// A particle thrown at the floor at 2 c_s: the wall force, scaled for flows below
-// c_s/10, cannot stop it; it crosses the floor and leaves the domain (2h below it).
+// A particle thrown at the floor at 2 c_s (the speed guard off, so that the escape is
+// what is caught): the wall force, scaled for flows below c_s/10, cannot stop it; it
+// crosses the floor and leaves the domain (2h below it).
 TEST(RunGuards, ParticleThroughWallNamesSpeedCause) {
   auto scene = smallTank();
+  scene.setup.method.max_speed_fraction = 0.0;
   const std::size_t i = nearest(scene.fluid, fluid::Vec<2>(0.2, 0.01));
   scene.fluid.v[i] = fluid::Vec<2>(0.0, -40.0);
   const auto id = scene.fluid.id[i];
@@ -64,9 +68,11 @@ TEST(RunGuards, ParticleThroughWallNamesSpeedCause) {
 }
 
 /// The guard's message when one droplet, added to smallTank() at r moving at v, leaves
-/// the domain; `removed` gets the outflow's count when the effect is listed.
+/// the domain; `removed` gets the outflow's count when the effect is listed. The speed
+/// guard is off: these cases test what is said of a particle that leaves.
 std::string dropletMessage(const fluid::Vec<2>& r, const fluid::Vec<2>& v, bool outflow, std::size_t* removed = nullptr) {
   auto scene = smallTank();
+  scene.setup.method.max_speed_fraction = 0.0;
   if (outflow) scene.setup.effects.push_back("outflow");
   scene.fluid.add(r, v, scene.setup.rho0, scene.fluid.m[0]);
   fluid::FluidSimulation<2> sim(scene.setup, scene.fluid, scene.boundary);
@@ -96,7 +102,8 @@ TEST(RunGuards, DropletOverASideWallIsCalledASplash) {
 }
 
 // With 'outflow' listed a droplet over the wall at 0.6 c_s (c_s = 20 m/s) is not taken:
-// the message says why, and calls it a numerical fault.
+// the message says why, and calls it a numerical fault. (With the speed guard on, at its
+// default c_s/2, the droplet is stopped by it before it leaves.)
 TEST(RunGuards, FastSprayIsNotTakenByTheOutflow) {
   std::size_t removed = 1;
   const std::string msg = dropletMessage(fluid::Vec<2>(0.38, 0.45), fluid::Vec<2>(0.6 * 20.0, 0.0), true, &removed);
@@ -167,15 +174,92 @@ TEST(RunGuards, CollapsingTimeStepInFastFlowBlamesSoundSpeed) {
   EXPECT_TRUE(has(msg, "raise sound_speed")) << msg;
 }
 
-// min_dt_fraction = 0 turns the guard off: the same compressed particle only slows the run.
+// min_dt_fraction = 0 turns the guard off. The same compressed particle then flings its
+// neighbours at 0.6 c_s, which the speed guard catches; with both off it only slows the run.
 TEST(RunGuards, TimeStepGuardCanBeTurnedOff) {
   auto scene = smallTank();
   const std::size_t i = nearest(scene.fluid, fluid::Vec<2>(0.2, 0.1));
   scene.fluid.rho[i] = 25.0 * scene.setup.rho0;
   scene.setup.method.min_dt_fraction = 0.0;
+  {
+    fluid::FluidSimulation<2> sim(scene.setup, scene.fluid, scene.boundary);
+    const std::string msg = runUntilError(sim, 1);
+    EXPECT_TRUE(has(msg, "fluid particle faster than method.max_speed_fraction")) << msg;
+  }
+  scene.setup.method.max_speed_fraction = 0.0;
   fluid::FluidSimulation<2> sim(scene.setup, scene.fluid, scene.boundary);
   EXPECT_NO_THROW(sim.step());
   EXPECT_LT(sim.lastDt(), 1e-3 * sim.cflDt());
+}
+
+/// smallTank() with one particle (returned in `id`) added at r moving at v.
+fluid::Scene<2> tankWithParticle(const fluid::Vec<2>& r, const fluid::Vec<2>& v, std::int64_t& id) {
+  auto scene = smallTank();
+  scene.fluid.add(r, v, scene.setup.rho0, scene.fluid.m[0]);
+  id = scene.fluid.id.back();
+  return scene;
+}
+
+/// Height of the tank's floor: its boundary particles' lowest row.
+double floorY(const fluid::Scene<2>& scene) {
+  double y = std::numeric_limits<double>::infinity();
+  for (const auto& r : scene.boundary.particles.r) y = std::min(y, r[1]);
+  return y;
+}
+
+// A particle in the middle of the water at 0.6 c_s (c_s = 20 m/s): faster than the
+// default limit c_s/2, stopped after the first step; no surface is near, so the flow
+// (the sound speed) is blamed.
+TEST(RunGuards, FastParticleInTheWaterBlamesTheFlow) {
+  std::int64_t id = 0;
+  auto scene = tankWithParticle(fluid::Vec<2>(0.21, 0.11), fluid::Vec<2>(12.0, 0.0), id);
+  fluid::FluidSimulation<2> sim(scene.setup, scene.fluid, scene.boundary);
+  const std::string msg = runUntilError(sim, 1);
+  std::printf("%s\n", msg.c_str());
+  EXPECT_TRUE(has(msg, "fluid particle faster than method.max_speed_fraction = 0.5 of c_s")) << msg;
+  EXPECT_TRUE(has(msg, "particle id " + std::to_string(id) + " ")) << msg;
+  EXPECT_TRUE(has(msg, "weakly-compressible range")) << msg;
+  EXPECT_TRUE(has(msg, "raise sound_speed")) << msg;
+  EXPECT_FALSE(has(msg, "behind surface")) << msg;
+}
+
+// The ship's bow leak of session 39 in miniature: a particle behind the floor's boundary
+// particles, moving along them at 0.6 c_s. The message says it is behind surface 'tank'
+// and points at the surface's sampling.
+TEST(RunGuards, FastParticleBehindASurfaceIsNamed) {
+  std::int64_t id = 0;
+  auto scene = tankWithParticle(fluid::Vec<2>(0.2, 0.0), fluid::Vec<2>(12.0, 0.0), id);
+  scene.fluid.r.back()[1] = floorY(scene) - 0.5 * scene.setup.dx;
+  fluid::FluidSimulation<2> sim(scene.setup, scene.fluid, scene.boundary);
+  const std::string msg = runUntilError(sim, 1);
+  std::printf("%s\n", msg.c_str());
+  EXPECT_TRUE(has(msg, "particle id " + std::to_string(id) + " ")) << msg;
+  EXPECT_TRUE(has(msg, "the particle is behind surface 'tank'")) << msg;
+  EXPECT_TRUE(has(msg, "gap in that surface's boundary particles")) << msg;
+}
+
+// Thrown out from behind the floor: 0.2 dx behind it at the start of the step, moving up
+// at 0.6 c_s, it is in front of the floor after the step (it moves 0.4 dx); the start
+// position is what shows where it came from.
+TEST(RunGuards, FastParticleThrownOutFromBehindASurfaceIsNamed) {
+  std::int64_t id = 0;
+  auto scene = tankWithParticle(fluid::Vec<2>(0.2, 0.0), fluid::Vec<2>(0.0, 12.0), id);
+  scene.fluid.r.back()[1] = floorY(scene) - 0.2 * scene.setup.dx;
+  fluid::FluidSimulation<2> sim(scene.setup, scene.fluid, scene.boundary);
+  const std::string msg = runUntilError(sim, 1);
+  std::printf("%s\n", msg.c_str());
+  EXPECT_TRUE(has(msg, "was, at the start of the step, behind surface 'tank'")) << msg;
+}
+
+// max_speed_fraction = 0 turns the speed guard off; 0.7 lets the 0.6 c_s particle run.
+TEST(RunGuards, SpeedGuardCanBeRaisedOrTurnedOff) {
+  for (const double fraction : {0.0, 0.7}) {
+    std::int64_t id = 0;
+    auto scene = tankWithParticle(fluid::Vec<2>(0.21, 0.11), fluid::Vec<2>(12.0, 0.0), id);
+    scene.setup.method.max_speed_fraction = fraction;
+    fluid::FluidSimulation<2> sim(scene.setup, scene.fluid, scene.boundary);
+    EXPECT_NO_THROW(sim.step()) << fraction;
+  }
 }
 
 // A still tank runs clean: the guards do not fire on a healthy run.

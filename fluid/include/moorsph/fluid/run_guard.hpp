@@ -10,6 +10,9 @@
 //  - a non-positive density: the continuity equation lets a splash or a free surface
 //    that is pulled apart go into tension until rho crosses zero; density diffusion
 //    (method option) removes the noise that starts it;
+//  - a particle faster than method.max_speed_fraction x c_s (default c_s/2): flung by
+//    a numerical fault, most often a particle that got behind a boundary surface
+//    through a gap in its particles and was thrown out by the wall force;
 //  - a collapsing time step: dt = force_dt_factor sqrt(h/|a|) falls when some particle
 //    is squeezed (a flow faster than c_s/10 compresses the fluid far beyond the 1%
 //    of the weakly-compressible range; or a wall/body closes on a particle).
@@ -31,18 +34,18 @@ struct GuardContext {
   std::size_t step;
 };
 
-/// Index of the first fluid particle with a non-finite state, outside the domain, or
-/// with rho <= 0; fluid.size() if there is none.
+/// Index of the first fluid particle with a non-finite state, outside the domain, with
+/// rho <= 0 or faster than max_speed (0: no speed limit); fluid.size() if there is none.
 template <int D>
-std::size_t findUnhealthyParticle(const FluidParticles<D>& fluid, const Domain<D>& domain);
+std::size_t findUnhealthyParticle(const FluidParticles<D>& fluid, const Domain<D>& domain, double max_speed = 0.0);
 
 /// Index of the fluid particle with the largest |dv/dt| (the one that sets the force
 /// bound on dt).
 template <int D>
 std::size_t findLargestAcceleration(const FluidParticles<D>& fluid);
 
-/// Message for particle i that failed findUnhealthyParticle: what, where, when, and
-/// the likely cause.
+/// Message for particle i that failed findUnhealthyParticle (with the speed limit
+/// method.max_speed_fraction x c_s): what, where, when, and the likely cause.
 template <int D>
 std::string describeUnhealthyParticle(const FluidParticles<D>& fluid, std::size_t i, const GuardContext<D>& ctx);
 
