@@ -102,7 +102,7 @@ int main(int argc, char** argv) {
   app.footer(
       "Exit codes: 0 success, 1 bad arguments, 2 bad input (scene or checkpoint rejected), 3 the run stopped on a "
       "numerical failure (failure checkpoint and diagnostic written), 4 output could not be written (or plotting unavailable), 130 interrupted "
-      "(SIGINT/SIGTERM; checkpoint written).");
+      "(SIGINT/SIGTERM; checkpoint written, unless it came during the set-up).");
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -5,8 +5,10 @@
 #include <atomic>
 #include <chrono>
 #include <csignal>
+#include <cstdlib>
 #include <cstdio>
 #include <filesystem>
+#include <unistd.h>
 #include <yaml-cpp/yaml.h>
 #include <fstream>
 #include <moorsph/cases/run_recorder.hpp>
@@ -28,8 +30,19 @@ namespace {
 namespace fs = std::filesystem;
 
 std::atomic<bool> g_stop{false};
+/// True once the scene is built and stepping. Before that a signal has nothing to save,
+/// and the set-up (packing the water, sampling hulls) can take minutes at fine spacings:
+/// the run stops at once instead of building the scene only to checkpoint its start.
+std::atomic<bool> g_stepping{false};
 
-extern "C" void onSignal(int) { g_stop.store(true); }
+extern "C" void onSignal(int) {
+  if (!g_stepping.load()) {
+    static const char message[] = "\ninterrupted while setting up the scene: nothing to save yet, stopped\n";
+    (void)!write(STDERR_FILENO, message, sizeof message - 1);  // async-signal-safe, unlike stdio
+    std::_Exit(kInterrupted);
+  }
+  g_stop.store(true);
+}
 
 std::string format(const char* fmt, double a, double b = 0.0, double c = 0.0) {
   char text[256];
@@ -289,6 +302,7 @@ int runDim(const io::SceneConfig& config, const RunOptions& o, const std::string
     interrupted_checkpoint = stopping;
   };
 
+  g_stepping.store(true);
   const auto summary = recorder.runTo(config.end_time, {}, control);
   progress.clear();
   series.flush();
@@ -367,6 +381,7 @@ int runScene(const RunOptions& o) {
   }
   if (o.threads > 0) omp_set_num_threads(o.threads);
   g_stop.store(false);
+  g_stepping.store(false);
   auto previous_int = std::signal(SIGINT, onSignal);
   auto previous_term = std::signal(SIGTERM, onSignal);
   int code = kSuccess;

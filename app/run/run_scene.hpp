@@ -32,7 +32,8 @@ int exportRun(const std::string& directory);
 /// with h5py and matplotlib; MOORSPH_PYTHON overrides the interpreter).
 int plotRun(const std::string& directory);
 
-/// What SIGINT/SIGTERM do: ask the running scene to stop after its current step.
+/// What SIGINT/SIGTERM do once the scene steps: ask it to stop after its current step
+/// (with a checkpoint). During the set-up a signal stops the program at once.
 void requestStop();
 
 }  // namespace moorsph::app
