@@ -11,21 +11,38 @@
 #include <fstream>
 #include <string>
 #include <thread>
+#include <vector>
+
+namespace {
+
+std::string sourceDir() { return std::getenv("MOORSPH_SOURCE_DIR") ? std::getenv("MOORSPH_SOURCE_DIR") : "."; }
+
+/// Starts `moorsph run SCENE --out OUT --threads 1 EXTRA...` in a child process (its
+/// stdout, and stderr if `quiet`, to /dev/null; OUT emptied first); returns its pid.
+pid_t startRun(const std::string& scene, const std::string& out, std::vector<std::string> extra, bool quiet) {
+  std::filesystem::remove_all(out);
+  std::vector<std::string> args{"moorsph", "run", scene, "--out", out, "--threads", "1"};
+  args.insert(args.end(), extra.begin(), extra.end());
+  const pid_t child = fork();
+  if (child != 0) return child;
+  freopen("/dev/null", "w", stdout);
+  if (quiet) freopen("/dev/null", "w", stderr);
+  std::vector<char*> argv;
+  for (std::string& a : args) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  execv(MOORSPH_BINARY, argv.data());
+  _exit(127);
+}
+
+}  // namespace
 
 TEST(KilledRun, OutputReadableUpToTheLastOutput) {
-  const std::string source = std::getenv("MOORSPH_SOURCE_DIR") ? std::getenv("MOORSPH_SOURCE_DIR") : ".";
+  const std::string source = sourceDir();
   const std::string out = testing::TempDir() + "moorsph_killed";
-  std::filesystem::remove_all(out);
-  const pid_t child = fork();
+  // Frequent output so that the kill is likely to land during a write.
+  const pid_t child = startRun(source + "/cases/dam_break_2d.yaml", out,
+                               {"--set", "output.interval=0.002", "--set", "output.particles_interval=0.002"}, false);
   ASSERT_GE(child, 0);
-  if (child == 0) {
-    // Frequent output so that the kill is likely to land during a write.
-    const std::string scene = source + "/cases/dam_break_2d.yaml";
-    freopen("/dev/null", "w", stdout);
-    execl(MOORSPH_BINARY, "moorsph", "run", scene.c_str(), "--out", out.c_str(), "--threads", "1", "--set",
-          "output.interval=0.002", "--set", "output.particles_interval=0.002", static_cast<char*>(nullptr));
-    _exit(127);
-  }
   // Wait until a few snapshots exist, then kill without warning.
   const auto start = std::chrono::steady_clock::now();
   while (std::chrono::steady_clock::now() - start < std::chrono::seconds(20)) {
@@ -57,19 +74,9 @@ TEST(KilledRun, OutputReadableUpToTheLastOutput) {
 // was only seen by the step loop, so the run built the whole scene first and then
 // checkpointed its start; at 2-3 m spacings that set-up takes minutes.
 TEST(KilledRun, InterruptDuringSetUpStopsAtOnce) {
-  const std::string source = std::getenv("MOORSPH_SOURCE_DIR") ? std::getenv("MOORSPH_SOURCE_DIR") : ".";
   const std::string out = testing::TempDir() + "moorsph_setup_interrupt";
-  std::filesystem::remove_all(out);
-  const pid_t child = fork();
+  const pid_t child = startRun(sourceDir() + "/cases/ship/ship_dx6.yaml", out, {"--end", "0.01"}, true);
   ASSERT_GE(child, 0);
-  if (child == 0) {
-    const std::string scene = source + "/cases/ship/ship_dx6.yaml";
-    freopen("/dev/null", "w", stdout);
-    freopen("/dev/null", "w", stderr);
-    execl(MOORSPH_BINARY, "moorsph", "run", scene.c_str(), "--out", out.c_str(), "--threads", "1", "--end", "0.01",
-          static_cast<char*>(nullptr));
-    _exit(127);
-  }
   // The log's first line is written before the scene is built.
   const auto start = std::chrono::steady_clock::now();
   while (!std::filesystem::exists(out + "/log.txt") && std::chrono::steady_clock::now() - start < std::chrono::seconds(20))
