@@ -98,7 +98,7 @@ std::unique_ptr<FluidSimulation<3>> buildSimulation(const Options& o, const Vec<
   for (std::size_t i = 0; i < scene.fluid.size(); ++i)
     if ((scene.fluid.r[i] - centre).norm() >= kR + 0.5 * o.dx) water.add(scene.fluid.r[i], scene.fluid.v[i], scene.fluid.rho[i], scene.fluid.m[i]);
   const auto surface = o.rings ? sampleSphereRings(centre, kR, o.boundary_spacing) : sampleSphere<3>(centre, kR, o.boundary_spacing);
-  scene.boundary.addSurface(surface, SurfaceInfo{"sphere", true});
+  scene.boundary.addSurface(surface, SurfaceInfo{"sphere", true, false, Eigen::Vector3d::Zero(), true});
   return std::make_unique<FluidSimulation<3>>(scene.setup, water, scene.boundary);
 }
 

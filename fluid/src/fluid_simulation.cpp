@@ -252,8 +252,10 @@ void FluidSimulation<D>::removeOutflow() {
 
 // Runtime guards (run_guard.hpp): the step just taken is compared with the CFL step,
 // then one O(N) pass finds the first particle that is non-finite, outside the domain,
-// at rho <= 0 or faster than max_speed_fraction x c_s. Either stops the run with the
-// particle, time and likely cause named. The step is checked first because a collapsed
+// at rho <= 0 or faster than max_speed_fraction x c_s, and one pass over the fluid-
+// boundary list the first that is inside a closed surface (deeper than max_leak_depth x
+// dx; skipped on a step whose outflow left the list stale). Each stops the run with
+// the particle, time and likely cause named. The step is checked first because a collapsed
 // step is the cause of what it flings: the squeezed particle's neighbours leave it at
 // more than c_s (tests/stability/test_run_guards.cpp).
 template <int D>
@@ -264,6 +266,11 @@ void FluidSimulation<D>::checkHealth() const {
   const double max_speed = setup_.method.max_speed_fraction * setup_.sound_speed;
   const std::size_t bad = findUnhealthyParticle(fluid_, setup_.domain, max_speed);
   if (bad < fluid_.size()) throw SimulationError(describeUnhealthyParticle(fluid_, bad, ctx));
+  if (walls_ && setup_.method.max_leak_depth > 0.0 && !rebuild_requested_) {
+    const LeakedParticle leak = findLeakedParticle(fluid_, *walls_, neighbours_.fluidBoundary(), setup_.domain,
+                                                   setup_.method.max_leak_depth * setup_.dx, setup_.dx);
+    if (leak.fluid < fluid_.size()) throw SimulationError(describeLeakedParticle(fluid_, leak, ctx));
+  }
 }
 
 template <int D>

@@ -238,7 +238,7 @@ BuiltScene<D> buildScene(const SceneConfig& c, WaterBuild water) {
     scene.boundary.addSurface(withoutPeriodicImages<D>(fluid::sampleBoxSurface<D>(toVec<D>(b.box.lower), toVec<D>(b.box.upper),
                                                                                   spacing, boxFaces<D>(b), fluid::NormalSide::Outward),
                                                        scene.setup.domain, spacing),
-                              fluid::SurfaceInfo{b.name, b.track_reaction});
+                              fluid::SurfaceInfo{b.name, b.track_reaction, false, Eigen::Vector3d::Zero(), b.open_faces.empty()});
     extents.push_back(&b.box);
   }
 
@@ -255,7 +255,7 @@ BuiltScene<D> buildScene(const SceneConfig& c, WaterBuild water) {
     if constexpr (D == 2) {
       const auto index = scene.boundary.addSurface(
           sampleCircle(Eigen::Vector2d(k.x, k.y), k.radius, spacing, fluid::NormalSide::Outward),
-          fluid::SurfaceInfo{k.name, k.track_reaction});
+          fluid::SurfaceInfo{k.name, k.track_reaction, false, Eigen::Vector3d::Zero(), true});
       extents.push_back(nullptr);
       mesh_tiles.resize(index + 1, 0.0);
       mesh_tiles[index] = 2.0 * M_PI * k.radius / std::ceil(2.0 * M_PI * k.radius / spacing - 1e-9);
@@ -287,7 +287,8 @@ BuiltScene<D> buildScene(const SceneConfig& c, WaterBuild water) {
 
   for (const auto& b : c.bodies) {
     const Triple at = b.start();
-    fluid::SurfaceInfo info{b.name, true, true, Eigen::Vector3d(at[0], at[1], D == 3 ? at[2] : 0.0)};
+    // A body is a closed solid (its mass properties need one): the leak guard watches it.
+    fluid::SurfaceInfo info{b.name, true, true, Eigen::Vector3d(at[0], at[1], D == 3 ? at[2] : 0.0), true};
     out.body_surfaces.push_back(scene.boundary.addSurface(sampleBodySurface<D>(b, spacing), info));
     extents.push_back(nullptr);
   }

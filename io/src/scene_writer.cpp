@@ -66,6 +66,7 @@ std::string resolvedSceneYaml(const SceneConfig& c) {
   e << YAML::Key << "cap" << YAML::Value << m.shifting.cap << YAML::EndMap;
   e << YAML::Key << "min_dt_fraction" << YAML::Value << m.min_dt_fraction;
   e << YAML::Key << "max_speed_fraction" << YAML::Value << m.max_speed_fraction;
+  e << YAML::Key << "max_leak_depth" << YAML::Value << m.max_leak_depth;
   e << YAML::EndMap;
   e << YAML::Key << "effects" << YAML::Value << YAML::Flow << c.effects;
   if (c.domain_given) {

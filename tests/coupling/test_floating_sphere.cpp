@@ -69,7 +69,7 @@ TEST(FloatingSphere, HalfDensitySphereFloatsHalfSubmerged) {
   const double level = (water.size() * dx * dx * dx + 2.0 / 3.0 * pi * R * R * R) / (side * side);
   const fluid::Vec<3> start = centre + fluid::Vec<3>(0.0, level - depth, 0.0);
   scene.boundary.addSurface(fluid::sampleSphere<3>(start, R, dx),
-                            fluid::SurfaceInfo{"sphere", true, true, Eigen::Vector3d(start[0], start[1], start[2])});
+                            fluid::SurfaceInfo{"sphere", true, true, Eigen::Vector3d(start[0], start[1], start[2]), true});
   auto fluid_sim = std::make_unique<fluid::FluidSimulation<3>>(scene.setup, water, scene.boundary);
 
   auto system = std::make_unique<bodies::MultibodySystem>();

@@ -369,14 +369,20 @@ TEST(SceneLoader, ParticleShiftingAndTheStepGuard) {
 
   // The guard alone is not a method option.
   const auto guard =
-      io::loadSceneText(std::string(kBase) + "method:\n  min_dt_fraction: 0\n  max_speed_fraction: 0.8\n", "s.yaml");
+      io::loadSceneText(std::string(kBase) + "method:\n  min_dt_fraction: 0\n  max_speed_fraction: 0.8\n  max_leak_depth: 0.3\n", "s.yaml");
   EXPECT_EQ(guard.method.name, "reference");
   EXPECT_EQ(guard.method.min_dt_fraction, 0.0);
   EXPECT_EQ(guard.method.max_speed_fraction, 0.8);
-  EXPECT_EQ(io::loadSceneText(io::resolvedSceneYaml(guard), "resolved.yaml").method.max_speed_fraction, 0.8);
+  EXPECT_EQ(guard.method.max_leak_depth, 0.3);
+  const auto guard_again = io::loadSceneText(io::resolvedSceneYaml(guard), "resolved.yaml");
+  EXPECT_EQ(guard_again.method.max_speed_fraction, 0.8);
+  EXPECT_EQ(guard_again.method.max_leak_depth, 0.3);
   EXPECT_EQ(c.method.max_speed_fraction, 0.5);
+  EXPECT_EQ(c.method.max_leak_depth, 0.1);
   const std::string speed = errorOf(std::string(kBase) + "method:\n  max_speed_fraction: -1\n");
   EXPECT_NE(speed.find("'method.max_speed_fraction'"), std::string::npos) << speed;
+  const std::string leak = errorOf(std::string(kBase) + "method:\n  max_leak_depth: -0.1\n");
+  EXPECT_NE(leak.find("'method.max_leak_depth'"), std::string::npos) << leak;
 
   const std::string cap = errorOf(std::string(kBase) + "method:\n  particle_shifting: {cap: 2}\n");
   EXPECT_NE(cap.find("'method.particle_shifting.cap'"), std::string::npos) << cap;

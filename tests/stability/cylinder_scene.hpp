@@ -52,7 +52,7 @@ inline std::unique_ptr<coupling::CoSimulation<2>> buildCylinderCase(const Cylind
       water.add(scene.fluid.r[i], scene.fluid.v[i], scene.fluid.rho[i], scene.fluid.m[i]);
   const Eigen::Vector3d origin(c.centre[0], c.centre[1], 0.0);
   scene.boundary.addSurface(fluid::sampleSphere<2>(c.centre, c.radius, c.dx),
-                            fluid::SurfaceInfo{"cylinder", true, true, origin});
+                            fluid::SurfaceInfo{"cylinder", true, true, origin, true});
 
   auto system = std::make_unique<bodies::MultibodySystem>();
   bodies::RigidBodySpec body;

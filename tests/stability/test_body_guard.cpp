@@ -26,7 +26,7 @@ coupling::CoSimulation<2> thrownBody(double speed, bool contact) {
   const fluid::Vec<2> centre(0.33, 0.3), half(0.03, 0.03);
   scene.boundary.addSurface(fluid::sampleBoxSurface<2>(centre - half, centre + half, spec.dx, fluid::allFaces<2>(),
                                                        fluid::NormalSide::Outward),
-                            fluid::SurfaceInfo{"crate", true, true, Eigen::Vector3d(centre[0], centre[1], 0.0)});
+                            fluid::SurfaceInfo{"crate", true, true, Eigen::Vector3d(centre[0], centre[1], 0.0), true});
   auto system = std::make_unique<bodies::MultibodySystem>();
   bodies::RigidBodySpec body;
   body.name = "crate";

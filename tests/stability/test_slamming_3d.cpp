@@ -29,7 +29,7 @@ TEST(StabilitySlamming3D, DroppedSphereStaysBounded) {
   auto scene = fluid::buildTankScene<3>(spec);
   const fluid::Vec<3> centre(0.15, depth + drop + radius, 0.15);
   const Eigen::Vector3d origin = centre;
-  scene.boundary.addSurface(fluid::sampleSphere<3>(centre, radius, dx), fluid::SurfaceInfo{"sphere", true, true, origin});
+  scene.boundary.addSurface(fluid::sampleSphere<3>(centre, radius, dx), fluid::SurfaceInfo{"sphere", true, true, origin, true});
   auto system = std::make_unique<bodies::MultibodySystem>();
   bodies::RigidBodySpec body;
   body.name = "sphere";

@@ -51,7 +51,7 @@ inline FloatingBoxScene buildFloatingBox(const FloatingBox& box) {
   const fluid::Vec<2> half(box.width / 2, box.height / 2);
   scene.boundary.addSurface(fluid::sampleBoxSurface<2>(out.centre - half, out.centre + half, box.dx,
                                                        fluid::allFaces<2>(), fluid::NormalSide::Outward),
-                            fluid::SurfaceInfo{"box", true, true, Eigen::Vector3d(out.centre[0], out.centre[1], 0.0)});
+                            fluid::SurfaceInfo{"box", true, true, Eigen::Vector3d(out.centre[0], out.centre[1], 0.0), true});
   out.fluid = std::make_unique<fluid::FluidSimulation<2>>(scene.setup, water, scene.boundary);
 
   out.system = std::make_unique<bodies::MultibodySystem>();

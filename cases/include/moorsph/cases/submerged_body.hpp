@@ -84,7 +84,7 @@ SubmergedBodyFluid<D> buildSubmergedBodyFluid(double dx, double radius, const fl
       box ? fluid::sampleBoxSurface<D>(centre - box_half, centre + box_half, dx, fluid::allFaces<D>(),
                                        fluid::NormalSide::Outward)
           : fluid::sampleSphere<D>(centre, radius, dx),
-      fluid::SurfaceInfo{"body", true, true, origin});
+      fluid::SurfaceInfo{"body", true, true, origin, true});
   return out;
 }
 

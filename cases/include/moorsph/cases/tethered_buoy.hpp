@@ -145,7 +145,7 @@ inline TetheredBuoyScene buildTetheredBuoy(const TetheredBuoyTank& t) {
 
   out.buoy_surface = scene.boundary.addSurface(t.ring_sampling ? fluid::sampleSphereRings(out.start, b.radius, t.dx)
                                             : fluid::sampleSphere<3>(out.start, b.radius, t.dx),
-                            fluid::SurfaceInfo{"buoy", true, true, out.start});
+                            fluid::SurfaceInfo{"buoy", true, true, out.start, true});
   auto fluid_sim = std::make_unique<fluid::FluidSimulation<3>>(scene.setup, water, scene.boundary);
   if (t.settling_damping > 0.0)
     fluid_sim->addEffect(std::make_unique<fluid::SettlingDamping<3>>(t.settling_damping, t.release_time));

@@ -53,6 +53,11 @@ struct SurfaceInfo {
   /// Reference point of a movable surface at t = 0 [m] (only the first D components are
   /// used): body-frame coordinates are measured from it, and motions place it.
   Eigen::Vector3d reference_point = Eigen::Vector3d::Zero();
+  /// The particles sample a closed surface (a body, a closed obstacle): the water is
+  /// outside it everywhere, so a fluid particle behind it has leaked in (the leak guard,
+  /// run_guard.hpp). An open surface (a tank, a plate, a piston) has free edges that
+  /// water may pass over; the guard leaves it alone.
+  bool closed = false;
 };
 
 }  // namespace moorsph::fluid

@@ -150,6 +150,12 @@ struct MethodParameters {
   /// the one that got behind the 6 m ship's bow face and was thrown out at 1.06 c_s
   /// (docs/validation/ship.md). 0 disables it.
   double max_speed_fraction = 0.5;
+  /// Runtime guard, not part of the method: a fluid particle inside a closed surface (a
+  /// body), more than max_leak_depth x dx behind the faces of its nearest boundary
+  /// particle, stops the run. The wall force holds the water about half a spacing in
+  /// front of the boundary particles; one behind them got through a gap in the surface's
+  /// particles or came faster than the force can stop. 0 disables it.
+  double max_leak_depth = 0.1;
 
   static MethodParameters reference() { return MethodParameters{}; }
 };

@@ -13,14 +13,21 @@
 //  - a particle faster than method.max_speed_fraction x c_s (default c_s/2): flung by
 //    a numerical fault, most often a particle that got behind a boundary surface
 //    through a gap in its particles and was thrown out by the wall force;
+//  - a fluid particle inside a closed surface (a body), deeper than
+//    method.max_leak_depth x dx behind the faces of its nearest boundary particle: it got
+//    through a gap in the surface's particles (or came too fast for the wall force). Caught as it crosses,
+//    while it is still slow: the speed guard only sees it once the wall force throws
+//    it out (the 6 m ship's bow leak sat inside the hull for about 4 s first);
 //  - a collapsing time step: dt = force_dt_factor sqrt(h/|a|) falls when some particle
 //    is squeezed (a flow faster than c_s/10 compresses the fluid far beyond the 1%
 //    of the weakly-compressible range; or a wall/body closes on a particle).
 #include <cstddef>
+#include <cstdint>
 #include <string>
 #include <moorsph/fluid/boundary_particles.hpp>
 #include <moorsph/fluid/fluid_particles.hpp>
 #include <moorsph/fluid/fluid_setup.hpp>
+#include <moorsph/fluid/neighbour_list.hpp>
 #include <moorsph/fluid/walls.hpp>
 
 namespace moorsph::fluid {
@@ -48,6 +55,29 @@ std::size_t findLargestAcceleration(const FluidParticles<D>& fluid);
 /// method.max_speed_fraction x c_s): what, where, when, and the likely cause.
 template <int D>
 std::string describeUnhealthyParticle(const FluidParticles<D>& fluid, std::size_t i, const GuardContext<D>& ctx);
+
+/// A fluid particle found behind a boundary surface by findLeakedParticle.
+struct LeakedParticle {
+  std::size_t fluid = 0;      ///< index of the fluid particle (the fluid's size if none)
+  std::uint32_t boundary = 0;  ///< its nearest boundary particle
+  double depth = 0.0;          ///< [m] behind that particle's faces (the least deep of its normals)
+};
+
+/// The first fluid particle that has leaked into a closed surface (SurfaceInfo::closed):
+/// more than `depth` behind every face of its nearest boundary particle, and behind every
+/// face of the surface's other particles up to half a spacing `dx` farther than that one
+/// (in front of any one it is outside the surface, beside a part thinner than the
+/// spacing). Its index is the fluid's size if there is none. The fluid-boundary list
+/// reaches 2h, so the nearest boundary particle within 2h is found; one pass over the
+/// list, as the wall force's.
+template <int D>
+LeakedParticle findLeakedParticle(const FluidParticles<D>& fluid, const Walls<D>& walls,
+                                  const NeighbourList& fluid_boundary, const Domain<D>& domain, double depth, double dx);
+
+/// Message for a particle found by findLeakedParticle: what, where, when, which surface
+/// and the likely cause.
+template <int D>
+std::string describeLeakedParticle(const FluidParticles<D>& fluid, const LeakedParticle& leak, const GuardContext<D>& ctx);
 
 /// Message for a time step `dt` that fell below min_dt_fraction x cfl_dt, naming the
 /// particle with the largest acceleration and the likely cause.
