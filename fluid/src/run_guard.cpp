@@ -97,8 +97,8 @@ void causeOfCrossing(std::ostream& os, const FluidParticles<D>& f, std::size_t i
           "largest flow speed";
   else if (!movingSurfaceTooFast(os, ctx))
     os << "a gap in the surface's boundary particles (a sharp edge with no particle carrying both faces' normals, a "
-          "face narrower than the boundary spacing, or a spacing coarser than dx = "
-       << ctx.setup.dx << " m); check the surface's sampling there or refine dx";
+          "face narrower than the boundary spacing, a spacing coarser than dx = "
+       << ctx.setup.dx << " m, or a thin wall crossed at a corner); check the surface's sampling there or refine dx";
 }
 
 /// Likely cause of a particle found behind or beyond a wall.
