@@ -86,7 +86,7 @@ void readMethod(MapReader& top, SceneConfig& c) {
   p.min_dt_fraction = m.positive("min_dt_fraction", p.min_dt_fraction, "smallest time step / CFL step before the run stops", true);
   if (p.min_dt_fraction >= 1.0) m.fail("min_dt_fraction", "expected a fraction in [0, 1) (0 disables the guard; default 1e-3)");
   p.max_speed_fraction = m.positive("max_speed_fraction", p.max_speed_fraction, "largest fluid speed / c_s before the run stops", true);
-  p.max_leak_depth = m.positive("max_leak_depth", p.max_leak_depth, "depth behind a boundary surface, in dx, before the run stops", true);
+  p.max_leak_depth = m.positive("max_leak_depth", p.max_leak_depth, "depth inside a closed surface, in dx, before the run stops", true);
   const bool changed = m.has("particle_shifting") || m.has("h_factor") || m.has("cfl") || m.has("predictor_fraction") || m.has("integrator") || m.has("xsph_form") ||
                        m.has("b_off") || m.has("density_diffusion") || m.has("force_dt_factor") || m.has("gamma") ||
                        m.has("xsph_eps") || m.has("viscosity_xi") || m.has("viscosity_beta_factor") ||

@@ -319,14 +319,15 @@ TEST(RunGuards, ParticleInsideAClosedSurfaceIsNamed) {
 }
 
 // The same particle is left alone when the box is an open surface (water may pass over
-// a free edge of a tank wall or a plate) and when max_leak_depth = 0 turns the guard off;
-// a particle 0.1 dx behind the face, no deeper than the default limit, is left too.
+// a free edge of a tank wall or a plate), when max_leak_depth = 0 turns the guard off, and
+// when the limit (2 dx) is deeper than the particle. (A particle within the faces' reach
+// would be pushed out in the step, so each case uses the unpushed 1.5 dx particle.)
 TEST(RunGuards, LeakGuardSparesOpenSurfacesAndCanBeTurnedOff) {
   struct Case {
     bool closed;
     double limit, y;
   };
-  for (const Case c : {Case{false, 0.1, 0.09}, Case{true, 0.0, 0.09}, Case{true, 0.1, 0.12 - 0.09 * 0.02}}) {
+  for (const Case c : {Case{false, 0.1, 0.09}, Case{true, 0.0, 0.09}, Case{true, 2.0, 0.09}}) {
     auto scene = tankWithCrate(c.closed);
     scene.setup.method.max_leak_depth = c.limit;
     scene.fluid.add(fluid::Vec<2>(0.2, c.y), fluid::Vec<2>::Zero(), scene.setup.rho0, scene.fluid.m[0]);

@@ -14,10 +14,10 @@
 //    a numerical fault, most often a particle that got behind a boundary surface
 //    through a gap in its particles and was thrown out by the wall force;
 //  - a fluid particle inside a closed surface (a body), deeper than
-//    method.max_leak_depth x dx behind the faces of its nearest boundary particle: it got
-//    through a gap in the surface's particles (or came too fast for the wall force). Caught as it crosses,
-//    while it is still slow: the speed guard only sees it once the wall force throws
-//    it out (the 6 m ship's bow leak sat inside the hull for about 4 s first);
+//    method.max_leak_depth x dx behind the faces of its nearest boundary particle: it
+//    got through a gap in the surface's particles (or came too fast for the wall force).
+//    Caught while it is still slow: the speed guard only sees it once the wall force
+//    throws it out (the 6 m ship's bow leak was caught 0.73 s earlier this way);
 //  - a collapsing time step: dt = force_dt_factor sqrt(h/|a|) falls when some particle
 //    is squeezed (a flow faster than c_s/10 compresses the fluid far beyond the 1%
 //    of the weakly-compressible range; or a wall/body closes on a particle).
