@@ -144,14 +144,14 @@ void NeighbourSearch<D>::buildLists(const std::vector<Vec<D>>& r, const std::vec
                                     const std::vector<char>& tracked) {
   const double radius2 = listRadius() * listRadius();
   const auto& grid = grid_;
-  const auto& domain = domain_;
+  const MinimumImage<D> image(domain_);
 
   // Fluid-fluid: every j != i of the fluid within the list radius.
   buildList(r.size(), fluid_fluid_, [&](std::size_t i, auto&& visit) {
     const int cell = grid.cellOf(r[i]);
     for (auto c = grid.neighbourCellsBegin(cell); c != grid.neighbourCellsEnd(cell); ++c) {
       for (std::uint32_t j = cell_start_[*c]; j < cell_start_[*c + 1]; ++j) {
-        if (j != i && domain.minimumImage(r[i] - r[j]).squaredNorm() < radius2) visit(j);
+        if (j != i && image(r[i] - r[j]).squaredNorm() < radius2) visit(j);
       }
     }
   });
@@ -164,7 +164,7 @@ void NeighbourSearch<D>::buildLists(const std::vector<Vec<D>>& r, const std::vec
       for (auto c = grid.neighbourCellsBegin(cell); c != grid.neighbourCellsEnd(cell); ++c) {
         for (std::uint32_t s = boundary_cell_start_[*c]; s < boundary_cell_start_[*c + 1]; ++s) {
           const std::uint32_t k = boundary_sorted_[s];
-          if (domain.minimumImage(r[i] - rb[k]).squaredNorm() < radius2) visit(k);
+          if (image(r[i] - rb[k]).squaredNorm() < radius2) visit(k);
         }
       }
     });
@@ -176,7 +176,7 @@ void NeighbourSearch<D>::buildLists(const std::vector<Vec<D>>& r, const std::vec
       const int cell = grid.cellOf(x);
       for (auto c = grid.neighbourCellsBegin(cell); c != grid.neighbourCellsEnd(cell); ++c) {
         for (std::uint32_t j = cell_start_[*c]; j < cell_start_[*c + 1]; ++j) {
-          if (domain.minimumImage(x - r[j]).squaredNorm() < radius2) visit(j);
+          if (image(x - r[j]).squaredNorm() < radius2) visit(j);
         }
       }
     });

@@ -225,10 +225,11 @@ LeakedParticle findLeakedParticle(const FluidParticles<D>& f, const Walls<D>& wa
   const std::vector<SurfaceInfo>& surfaces = walls.surfaces();
   const std::size_t n = f.size();
   if (list.begin.size() != n + 1) return {n, 0, 0.0};  // a stale list (outflow removed particles): next step
+  const MinimumImage<D> image(domain);
   // How far r_ik lies behind particle k's faces: behind all of an edge particle's
   // normals (in front of any one is outside), by the least of them; negative in front.
   auto depthBehind = [&](std::size_t i, std::uint32_t k) {
-    const Vec<D> r_ik = domain.minimumImage(f.r[i] - b.r[k]);
+    const Vec<D> r_ik = image(f.r[i] - b.r[k]);
     double front = -std::numeric_limits<double>::infinity();
     for (std::uint32_t a = b.normal_begin[k]; a < b.normal_begin[k + 1]; ++a) front = std::max(front, r_ik.dot(b.normals[a]));
     return -front;
@@ -238,7 +239,7 @@ LeakedParticle findLeakedParticle(const FluidParticles<D>& f, const Walls<D>& wa
     double d2 = std::numeric_limits<double>::infinity();
     for (std::uint64_t s = list.begin[i]; s < list.begin[i + 1]; ++s) {
       const std::uint32_t k = list.index[s];
-      const double r2 = domain.minimumImage(f.r[i] - b.r[k]).squaredNorm();
+      const double r2 = image(f.r[i] - b.r[k]).squaredNorm();
       if (r2 < d2) {
         d2 = r2;
         best = k;
@@ -250,10 +251,10 @@ LeakedParticle findLeakedParticle(const FluidParticles<D>& f, const Walls<D>& wa
   // beyond the nearest (farther ones may lie past a concave turn of the surface: in the
   // 6 m ship's bow a particle 0.17 dx inside had an edge particle 1.5 dx away in front).
   auto behindPatch = [&](std::size_t i, std::uint32_t nearest_k) {
-    const double reach = domain.minimumImage(f.r[i] - b.r[nearest_k]).norm() + 0.5 * dx;
+    const double reach = image(f.r[i] - b.r[nearest_k]).norm() + 0.5 * dx;
     for (std::uint64_t s = list.begin[i]; s < list.begin[i + 1]; ++s) {
       const std::uint32_t k = list.index[s];
-      if (b.surface[k] != b.surface[nearest_k] || domain.minimumImage(f.r[i] - b.r[k]).squaredNorm() > reach * reach)
+      if (b.surface[k] != b.surface[nearest_k] || image(f.r[i] - b.r[k]).squaredNorm() > reach * reach)
         continue;
       if (depthBehind(i, k) <= 0.0) return false;
     }

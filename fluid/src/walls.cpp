@@ -174,13 +174,13 @@ WallExtent<D> Walls<D>::staticExtent(double tolerance) const {
 }
 
 template <int D>
-bool Walls<D>::beyondAnEdge(const FluidContext<D>& ctx, const Domain<D>& domain, std::size_t i, std::size_t k,
+bool Walls<D>::beyondAnEdge(const FluidContext<D>& ctx, const MinimumImage<D>& image, std::size_t i, std::size_t k,
                             const Vec<D>& r_ik) const {
   const BoundaryParticles<D>& b = geometry_.particles;
   const NeighbourList& list = ctx.neighbours.fluidBoundary();
   for (std::uint64_t s = list.begin[i]; s < list.begin[i + 1]; ++s) {
     const std::uint32_t k2 = list.index[s];
-    if (law_.beyondEdge(r_ik, k, domain.minimumImage(ctx.fluid.r[i] - b.r[k2]), k2, b)) return true;
+    if (law_.beyondEdge(r_ik, k, image(ctx.fluid.r[i] - b.r[k2]), k2, b)) return true;
   }
   return false;
 }
@@ -189,14 +189,14 @@ template <int D>
 void Walls<D>::addRates(FluidContext<D>& ctx) {
   FluidParticles<D>& f = ctx.fluid;
   const NeighbourList& list = ctx.neighbours.fluidBoundary();
-  const Domain<D> domain = ctx.setup.domain;
+  const MinimumImage<D> image(ctx.setup.domain);
   const std::size_t n = f.size();
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i) {
     Vec<D> acc = Vec<D>::Zero();
     for (std::uint64_t s = list.begin[i]; s < list.begin[i + 1]; ++s) {
       const std::uint32_t k = list.index[s];
-      acc += push(ctx, domain, i, k);
+      acc += push(ctx, image, i, k);
     }
     f.dvdt[i] += acc;
   }
@@ -210,7 +210,7 @@ void Walls<D>::addReactions(FluidContext<D>& ctx) {
   const FluidParticles<D>& f = ctx.fluid;
   const NeighbourList& list = ctx.neighbours.boundaryFluid();
   const auto& tracked = ctx.neighbours.trackedBoundary();
-  const Domain<D> domain = ctx.setup.domain;
+  const MinimumImage<D> image(ctx.setup.domain);
   BoundaryParticles<D>& b = geometry_.particles;
   const std::size_t n = tracked.size();
   const bool couples = law_.conservative();
@@ -222,9 +222,9 @@ void Walls<D>::addReactions(FluidContext<D>& ctx) {
     Eigen::Vector3d couple = Eigen::Vector3d::Zero();
     for (std::uint64_t s = list.begin[t]; s < list.begin[t + 1]; ++s) {
       const std::uint32_t i = list.index[s];
-      const Vec<D> reaction = -f.m[i] * push(ctx, domain, i, k);
+      const Vec<D> reaction = -f.m[i] * push(ctx, image, i, k);
       force += reaction;
-      if (couples) couple += to3(domain.minimumImage(f.r[i] - b.r[k])).cross(to3(reaction));
+      if (couples) couple += to3(image(f.r[i] - b.r[k])).cross(to3(reaction));
     }
     b.reaction[k] = force;
     if (couples) couples_[k] = couple;

@@ -52,4 +52,25 @@ struct Domain {
   }
 };
 
+/// Domain::minimumImage for loops over many pairs: the periods' reciprocals are taken
+/// once, so a pair multiplies where minimumImage divides (a division costs as much as
+/// the rest of a list candidate's test). The shift is the same unless d lies within
+/// round-off of half a period, which no pair within a list radius comes near.
+template <int D>
+struct MinimumImage {
+  Vec<D> period = Vec<D>::Zero();      ///< L along the periodic axes, 0 along the bounded ones
+  Vec<D> inv_period = Vec<D>::Zero();  ///< 1/L along the periodic axes, 0 (no shift) along the bounded ones
+  explicit MinimumImage(const Domain<D>& domain) {
+    for (int k = 0; k < D; ++k) {
+      if (!domain.periodic[k]) continue;
+      period[k] = domain.upper[k] - domain.lower[k];
+      inv_period[k] = 1.0 / period[k];
+    }
+  }
+  Vec<D> operator()(Vec<D> d) const {
+    for (int k = 0; k < D; ++k) d[k] -= period[k] * std::nearbyint(d[k] * inv_period[k]);
+    return d;
+  }
+};
+
 }  // namespace moorsph::fluid

@@ -75,16 +75,16 @@ class Walls final : public FluidEffect<D>, public Counted<Walls<D>> {
   void findSurfaceRanges();
   /// The push of boundary particle k on fluid particle i: the force law, cancelled when
   /// i is beyond an edge of k's surface. Inline: it is the walls' inner loop.
-  Vec<D> push(const FluidContext<D>& ctx, const Domain<D>& domain, std::size_t i, std::size_t k) const {
+  Vec<D> push(const FluidContext<D>& ctx, const MinimumImage<D>& image, std::size_t i, std::size_t k) const {
     const BoundaryParticles<D>& b = geometry_.particles;
-    const Vec<D> r_ik = domain.minimumImage(ctx.fluid.r[i] - b.r[k]);
+    const Vec<D> r_ik = image(ctx.fluid.r[i] - b.r[k]);
     const Vec<D> a = law_.acceleration(r_ik, b, k);
     // Only near a convex edge or a thin part can i be beyond an edge of k's surface.
-    if (near_feature_[k] && !a.isZero() && beyondAnEdge(ctx, domain, i, k, r_ik)) return Vec<D>::Zero();
+    if (near_feature_[k] && !a.isZero() && beyondAnEdge(ctx, image, i, k, r_ik)) return Vec<D>::Zero();
     return a;
   }
   /// BoundaryForceLaw::beyondEdge against each of i's boundary neighbours.
-  bool beyondAnEdge(const FluidContext<D>& ctx, const Domain<D>& domain, std::size_t i, std::size_t k,
+  bool beyondAnEdge(const FluidContext<D>& ctx, const MinimumImage<D>& image, std::size_t i, std::size_t k,
                     const Vec<D>& r_ik) const;
   void findFeatureParticles(double reach);
 
