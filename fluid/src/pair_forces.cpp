@@ -2,6 +2,8 @@
 
 #include <omp.h>
 
+#include <array>
+#include <cmath>
 #include <stdexcept>
 #include <type_traits>
 #include <vector>
@@ -98,9 +100,13 @@ class PairForcesImpl final : public PairForces<D> {
     if constexpr (kMirror) imageStates(ctx);
     if constexpr (kRenormalised) densityGradients(ctx);
     // Mirror images are seen from their owner only, so with mirror planes every particle
-    // sums its own list; otherwise each pair is evaluated once for both particles.
+    // sums its own list. Otherwise, in 3D or a periodic domain, every row is summed in
+    // vector lanes (sumRows); a 2D row is too short for that to pay, and there each pair
+    // is evaluated once for both particles (docs/performance.md, session 42).
     if constexpr (kMirror)
       interactions_ = sumPairs(ctx);
+    else if constexpr (D == 3 || Periodic)
+      interactions_ = sumRows(ctx);
     else
       interactions_ = sumPairsOnce(ctx);
   }
@@ -321,6 +327,152 @@ class PairForcesImpl final : public PairForces<D> {
     return interactions;
   }
 
+  /// Each owner's row of its list summed on its own, every pair seen from both sides,
+  /// the row's candidates taken several at a time (#pragma omp simd: gathers from the
+  /// columns, the lanes out of reach masked by zeroing F and W). Twice the pair
+  /// evaluations of sumPairsOnce, but no scatter into j's sums, no per-thread arrays,
+  /// no j > i test and no division for the periodic image: in 3D the vector lanes more
+  /// than pay for it (docs/performance.md, session 42).
+  std::uint64_t sumRows(FluidContext<D>& ctx) {
+    FluidParticles<D>& f = ctx.fluid;
+    const NeighbourList& list = ctx.neighbours.fluidFluid();
+    const WendlandKernel<D> kernel = ctx.kernel;
+    fillColumns(f);
+    const std::size_t n = f.size();
+    std::uint64_t interactions = 0;
+#pragma omp parallel for schedule(static) reduction(+ : interactions)
+    for (std::size_t i = 0; i < n; ++i) {
+      Sums sums;
+      interactions += sumRow(ctx, list, i, sums);
+      storeRates(f, kernel, i, sums);
+    }
+    return interactions;
+  }
+
+  /// Copies the neighbour state the row loop gathers into one array per component.
+  void fillColumns(const FluidParticles<D>& f) {
+    const std::size_t n = f.size();
+    for (int a = 0; a < D; ++a) {
+      columns_.x[a].resize(n);
+      columns_.v[a].resize(n);
+      if constexpr (kRenormalised) columns_.grad_rho[a].resize(n);
+    }
+#pragma omp parallel for schedule(static)
+    for (std::size_t i = 0; i < n; ++i) {
+      for (int a = 0; a < D; ++a) {
+        columns_.x[a][i] = f.r[i][a];
+        columns_.v[a][i] = f.v[i][a];
+        if constexpr (kRenormalised) columns_.grad_rho[a][i] = grad_rho_[i][a];
+      }
+    }
+  }
+
+  /// The sums of owner i over its whole list (the terms of addPair, i's side only).
+  /// Returns the number of listed particles within reach.
+  std::uint32_t sumRow(const FluidContext<D>& ctx, const NeighbourList& list, std::size_t i, Sums& out) const {
+    const FluidParticles<D>& f = ctx.fluid;
+    const KernelConstants k(ctx.kernel);
+    const MinimumImage<D> image(ctx.setup.domain);
+    // Scalars and plain pointers only: the vectoriser leaves a loop with local arrays.
+    constexpr int Z = D - 1;  // the third axis in 3D; in 2D its terms are skipped
+    const double *x0 = columns_.x[0].data(), *x1 = columns_.x[1].data(), *x2 = columns_.x[Z].data();
+    const double *v0 = columns_.v[0].data(), *v1 = columns_.v[1].data(), *v2 = columns_.v[Z].data();
+    const double *g0 = nullptr, *g1 = nullptr, *g2 = nullptr;
+    if constexpr (kRenormalised) {
+      g0 = columns_.grad_rho[0].data();
+      g1 = columns_.grad_rho[1].data();
+      g2 = columns_.grad_rho[Z].data();
+    }
+    const double* m = f.m.data();
+    const double* rho = f.rho.data();
+    const double* p_over_rho2 = p_over_rho2_.data();
+    const double* inv_rho = inv_rho_.data();
+    const double* volume = volume_.data();
+    const std::uint32_t* index = list.index.data();
+    const double xi0 = f.r[i][0], xi1 = f.r[i][1], xi2 = f.r[i][Z];
+    const double vi0 = f.v[i][0], vi1 = f.v[i][1], vi2 = f.v[i][Z];
+    double gi0 = 0, gi1 = 0, gi2 = 0, hy0 = 0, hy1 = 0, hy2 = 0;
+    if constexpr (kRenormalised) {
+      gi0 = grad_rho_[i][0];
+      gi1 = grad_rho_[i][1];
+      gi2 = grad_rho_[i][Z];
+    } else if constexpr (kDiffusion) {
+      hy0 = diffusion_.hydrostatic[0];
+      hy1 = diffusion_.hydrostatic[1];
+      hy2 = diffusion_.hydrostatic[Z];
+    }
+    const double L0 = image.period[0], L1 = image.period[1], L2 = image.period[Z];  // the image's shift, unrolled
+    const double iL0 = image.inv_period[0], iL1 = image.inv_period[1], iL2 = image.inv_period[Z];
+    const double rho_i = f.rho[i], p_i = p_over_rho2_[i], inv_rho_i = inv_rho_[i];
+    double ax = 0, ay = 0, az = 0, sx = 0, sy = 0, sz = 0, sw = 0, drho = 0;
+    std::uint32_t count = 0;
+    const std::uint64_t first = list.begin[i], last = list.begin[i + 1];
+#pragma omp simd reduction(+ : ax, ay, az, sx, sy, sz, sw, drho, count)
+    for (std::uint64_t s = first; s < last; ++s) {
+      const std::uint32_t j = index[s];
+      double rx = xi0 - x0[j], ry = xi1 - x1[j], rz = 0.0;
+      rx -= L0 * std::nearbyint(rx * iL0);
+      ry -= L1 * std::nearbyint(ry * iL1);
+      double vr = (vi0 - v0[j]) * rx + (vi1 - v1[j]) * ry;
+      if constexpr (D == 3) {
+        rz = xi2 - x2[j];
+        rz -= L2 * std::nearbyint(rz * iL2);
+        vr += (vi2 - v2[j]) * rz;
+      }
+      const double r2 = rx * rx + ry * ry + rz * rz;
+      const bool reached = r2 < k.support2;
+      const double q = std::sqrt(r2) * k.inv_h;
+      const double t = 2.0 - q;
+      const double t3 = t * t * t;
+      const double F = reached ? k.grad_scale * t3 : 0.0;  // grad_i W_ij = F r_ij
+      drho += m[j] * vr * F;
+      // 1/(r2 + beta^2) and r2/(r2 + eta^2) from one division when both terms are on.
+      double inv_viscous = 0.0, diffusive = 0.0;
+      if constexpr (kViscosity && kDiffusion) {
+        const double a = r2 + viscosity_.beta2, b = r2 + diffusion_.eta2;
+        const double inv_ab = 1.0 / (a * b);
+        inv_viscous = b * inv_ab;
+        diffusive = r2 * a * inv_ab;
+      } else if constexpr (kViscosity) {
+        inv_viscous = 1.0 / (r2 + viscosity_.beta2);
+      } else if constexpr (kDiffusion) {
+        diffusive = r2 / (r2 + diffusion_.eta2);
+      }
+      double coef = p_i + p_over_rho2[j];
+      if constexpr (kViscosity) coef -= viscosity_.xi_mu_eff * vr * inv_rho_i * inv_rho[j] * inv_viscous;
+      const double push = m[j] * coef * F;
+      ax -= push * rx;
+      ay -= push * ry;
+      az -= push * rz;
+      if constexpr (kXsph) {
+        const double w = reached ? k.alpha * t3 * t * (1.0 + 2.0 * q) * volume[j] : 0.0;  // W_ij V_j
+        sx += w * v0[j];
+        sy += w * v1[j];
+        if constexpr (D == 3) sz += w * v2[j];
+        sw += w;
+      }
+      if constexpr (kDiffusion) {
+        double jump = rho_i - rho[j];
+        if constexpr (kRenormalised) {
+          jump -= 0.5 * ((gi0 + g0[j]) * rx + (gi1 + g1[j]) * ry);
+          if constexpr (D == 3) jump -= 0.5 * (gi2 + g2[j]) * rz;
+        } else {
+          jump -= hy0 * rx + hy1 * ry + hy2 * rz;
+        }
+        drho += diffusion_.coefficient * jump * F * diffusive * volume[j];
+      }
+      count += reached ? 1u : 0u;
+    }
+    const double acc[3] = {ax, ay, az}, xsph[3] = {sx, sy, sz};
+    for (int a = 0; a < D; ++a) {
+      out.acc[a] = acc[a];
+      out.xsph[a] = xsph[a];
+    }
+    out.xsph_weight = sw;
+    out.drho = drho;
+    return count;
+  }
+
   static void add(Sums& to, const Sums& from) {
     to.acc += from.acc;
     to.xsph += from.xsph;
@@ -374,6 +526,10 @@ class PairForcesImpl final : public PairForces<D> {
   std::uint64_t interactions_ = 0;
   std::vector<double> p_over_rho2_, inv_rho_, volume_;
   std::vector<std::vector<Sums>> thread_sums_;  ///< sumPairsOnce: one array per thread
+  /// sumRows: the neighbour state as one array per component, for the vector gathers.
+  struct Columns {
+    std::array<std::vector<double>, D> x, v, grad_rho;
+  } columns_;
   std::vector<Vec<D>> grad_rho_;  ///< renormalised density gradients (kRenormalised only)
   std::vector<double> image_rho_, image_p_over_rho2_, image_inv_rho_, image_volume_;  ///< kMirror only
 };
