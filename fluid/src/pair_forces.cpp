@@ -44,6 +44,27 @@ class PairForcesImpl final : public PairForces<D> {
           grad_scale(-10.0 * k.alpha() * inv_h * inv_h),
           alpha(k.alpha()) {}
   };
+  /// What the vector row loops read: plain pointers into the Vec<D> arrays (stride D;
+  /// a gather serves a strided array as well as a column) and the periodic shift as
+  /// scalars (the vectoriser leaves a loop with local arrays or Eigen packets in it).
+  struct Lanes {
+    static_assert(sizeof(Vec<D>) == D * sizeof(double), "Vec<D> arrays must be plain doubles");
+    static constexpr int Z = D - 1;  ///< the third axis in 3D; in 2D its terms are skipped
+    const double *r, *v, *g;
+    double L0, L1, L2, iL0, iL1, iL2;
+    Lanes(const FluidParticles<D>& f, const Domain<D>& domain, const std::vector<Vec<D>>& grad_rho)
+        : r(f.r.data()->data()), v(f.v.data()->data()), g(grad_rho.empty() ? nullptr : grad_rho.data()->data()) {
+      const MinimumImage<D> image(domain);
+      L0 = image.period[0], L1 = image.period[1], L2 = image.period[Z];
+      iL0 = image.inv_period[0], iL1 = image.inv_period[1], iL2 = image.inv_period[Z];
+    }
+    /// Component of the minimum image r_i - r_j, given the two coordinates.
+    static double separation(double xi, double xj, double L, double inv_L) {
+      const double d = xi - xj;
+      return d - L * std::nearbyint(d * inv_L);
+    }
+  };
+
   /// The sums of particle i's rates.
   struct Sums {
     Vec<D> acc = Vec<D>::Zero();
@@ -61,20 +82,39 @@ class PairForcesImpl final : public PairForces<D> {
   void continuityRate(FluidContext<D>& ctx, std::vector<double>& out) const override {
     const FluidParticles<D>& f = ctx.fluid;
     const NeighbourList& list = ctx.neighbours.fluidFluid();
-    const Domain<D> domain = ctx.setup.domain;
     const KernelConstants k(ctx.kernel);
+    const Lanes lanes(f, ctx.setup.domain, {});
+    constexpr int Z = Lanes::Z, S = D;  // S: the stride of the Vec<D> arrays
+    const double *r = lanes.r, *v = lanes.v, *m = f.m.data();
+    const std::uint32_t* index = list.index.data();
     const std::size_t n = f.size();
     out.resize(n);
 #pragma omp parallel for schedule(static)
     for (std::size_t i = 0; i < n; ++i) {
-      const Vec<D> vi = f.v[i];
+      const double xi0 = f.r[i][0], xi1 = f.r[i][1], xi2 = f.r[i][Z];
+      const double vi0 = f.v[i][0], vi1 = f.v[i][1], vi2 = f.v[i][Z];
       double sum = 0.0;
-      forEachNeighbour(f, list, domain, i, [&](const Neighbour& nb) {
+      const std::uint64_t first = list.begin[i], last = list.begin[i + 1];
+#pragma omp simd reduction(+ : sum)
+      for (std::uint64_t s = first; s < last; ++s) {
+        const std::size_t j = index[s];
+        const double rx = Lanes::separation(xi0, r[S * j], lanes.L0, lanes.iL0);
+        const double ry = Lanes::separation(xi1, r[S * j + 1], lanes.L1, lanes.iL1);
+        double r2 = rx * rx + ry * ry, vr = (vi0 - v[S * j]) * rx + (vi1 - v[S * j + 1]) * ry;
+        if constexpr (D == 3) {
+          const double rz = Lanes::separation(xi2, r[S * j + Z], lanes.L2, lanes.iL2);
+          r2 += rz * rz;
+          vr += (vi2 - v[S * j + Z]) * rz;
+        }
+        const double t = 2.0 - std::sqrt(r2) * k.inv_h;
+        sum += r2 < k.support2 ? m[j] * vr * k.grad_scale * t * t * t : 0.0;
+      }
+      const Vec<D> vi = f.v[i];
+      forEachImage(ctx, list, i, [&](const Neighbour& nb) {
         const double r2 = nb.rij.squaredNorm();
-        if (r2 >= k.support2) return false;
+        if (r2 >= k.support2) return;
         const double t = 2.0 - std::sqrt(r2) * k.inv_h;
         sum += nb.m * (vi - nb.v).dot(nb.rij) * k.grad_scale * t * t * t;
-        return true;
       });
       out[i] = sum;
     }
@@ -99,13 +139,12 @@ class PairForcesImpl final : public PairForces<D> {
     }
     if constexpr (kMirror) imageStates(ctx);
     if constexpr (kRenormalised) densityGradients(ctx);
-    // Mirror images are seen from their owner only, so with mirror planes every particle
-    // sums its own list. Otherwise, in 3D or a periodic domain, every row is summed in
-    // vector lanes (sumRows); a 2D row is too short for that to pay, and there each pair
-    // is evaluated once for both particles (docs/performance.md, session 42).
-    if constexpr (kMirror)
-      interactions_ = sumPairs(ctx);
-    else if constexpr (D == 3 || Periodic)
+    // Every row is summed in vector lanes (sumRows), with mirror planes (whose images
+    // are seen from their owner only, so every particle sums its own row), in 3D and in
+    // a periodic domain. A bounded 2D row without mirrors is too short for the lanes
+    // to pay, and there each pair is evaluated once for both particles
+    // (docs/performance.md, session 42).
+    if constexpr (kMirror || D == 3 || Periodic)
       interactions_ = sumRows(ctx);
     else
       interactions_ = sumPairsOnce(ctx);
@@ -214,12 +253,16 @@ class PairForcesImpl final : public PairForces<D> {
     return count;
   }
 
-  /// G_i of RenormalisedDensityDiffusionTerm: the renormalised density gradient.
+  /// G_i of RenormalisedDensityDiffusionTerm: the renormalised density gradient, each
+  /// row in vector lanes as in sumRow, then the mirror images.
   void densityGradients(FluidContext<D>& ctx) {
     const FluidParticles<D>& f = ctx.fluid;
     const NeighbourList& list = ctx.neighbours.fluidFluid();
-    const Domain<D> domain = ctx.setup.domain;
     const KernelConstants k(ctx.kernel);
+    const Lanes lanes(f, ctx.setup.domain, {});
+    constexpr int Z = Lanes::Z, S = D;
+    const double *r = lanes.r, *rho = f.rho.data(), *volume = volume_.data();
+    const std::uint32_t* index = list.index.data();
     // det of sum_j V_j r_ji (x) grad_i W_ij on a full neighbourhood: ~1 (it is the
     // identity for an exact quadrature), so min_det is a fraction of one.
     const double min_det = diffusion_.min_det;
@@ -227,16 +270,48 @@ class PairForcesImpl final : public PairForces<D> {
     grad_rho_.resize(n);
 #pragma omp parallel for schedule(static)
     for (std::size_t i = 0; i < n; ++i) {
-      Eigen::Matrix<double, D, D> moment = Eigen::Matrix<double, D, D>::Zero();
-      Vec<D> sum = Vec<D>::Zero();
-      forEachNeighbour(f, list, domain, i, [&](const Neighbour& nb) {
-        const double r2 = nb.rij.squaredNorm();
-        if (r2 >= k.support2) return false;
+      const double xi0 = f.r[i][0], xi1 = f.r[i][1], xi2 = f.r[i][Z], rho_i = f.rho[i];
+      // The moment sum_j V_j r_ji (x) grad_i W_ij = -sum_j F r_ij r_ij^T is symmetric.
+      double m00 = 0, m01 = 0, m11 = 0, m02 = 0, m12 = 0, m22 = 0, s0 = 0, s1 = 0, s2 = 0;
+      const std::uint64_t first = list.begin[i], last = list.begin[i + 1];
+#pragma omp simd reduction(+ : m00, m01, m11, m02, m12, m22, s0, s1, s2)
+      for (std::uint64_t s = first; s < last; ++s) {
+        const std::size_t j = index[s];
+        const double rx = Lanes::separation(xi0, r[S * j], lanes.L0, lanes.iL0);
+        const double ry = Lanes::separation(xi1, r[S * j + 1], lanes.L1, lanes.iL1);
+        const double rz = D == 3 ? Lanes::separation(xi2, r[S * j + Z], lanes.L2, lanes.iL2) : 0.0;
+        const double r2 = rx * rx + ry * ry + rz * rz;
         const double t = 2.0 - std::sqrt(r2) * k.inv_h;
-        const double F = k.grad_scale * t * t * t * nb.volume;  // V_j grad_i W_ij = F r_ij
-        moment -= F * nb.rij * nb.rij.transpose();              // r_ji (x) grad_i W_ij V_j
-        sum += (nb.rho - f.rho[i]) * F * nb.rij;
-        return true;
+        const double F = r2 < k.support2 ? k.grad_scale * t * t * t * volume[j] : 0.0;  // V_j grad_i W_ij = F r_ij
+        m00 -= F * rx * rx;
+        m01 -= F * rx * ry;
+        m11 -= F * ry * ry;
+        const double jump = (rho[j] - rho_i) * F;
+        s0 += jump * rx;
+        s1 += jump * ry;
+        if constexpr (D == 3) {
+          m02 -= F * rx * rz;
+          m12 -= F * ry * rz;
+          m22 -= F * rz * rz;
+          s2 += jump * rz;
+        }
+      }
+      Eigen::Matrix<double, D, D> moment;
+      Vec<D> sum;
+      if constexpr (D == 3) {
+        moment << m00, m01, m02, m01, m11, m12, m02, m12, m22;
+        sum << s0, s1, s2;
+      } else {
+        moment << m00, m01, m01, m11;
+        sum << s0, s1;
+      }
+      forEachImage(ctx, list, i, [&](const Neighbour& nb) {
+        const double r2 = nb.rij.squaredNorm();
+        if (r2 >= k.support2) return;
+        const double t = 2.0 - std::sqrt(r2) * k.inv_h;
+        const double F = k.grad_scale * t * t * t * nb.volume;
+        moment -= F * nb.rij * nb.rij.transpose();
+        sum += (nb.rho - rho_i) * F * nb.rij;
       });
       grad_rho_[i] = moment.determinant() > min_det ? Vec<D>(moment.inverse() * sum) : diffusion_.hydrostatic;
     }
@@ -288,7 +363,7 @@ class PairForcesImpl final : public PairForces<D> {
 
   /// Each listed pair once (j > i), added to both particles. Every thread accumulates in
   /// its own array of sums (a pair's j may be another thread's owner); the arrays are
-  /// added up per particle afterwards. Half the kernel and term evaluations of sumPairs.
+  /// added up per particle afterwards. Half the kernel and term evaluations of sumRows.
   std::uint64_t sumPairsOnce(FluidContext<D>& ctx) {
     FluidParticles<D>& f = ctx.fluid;
     const NeighbourList& list = ctx.neighbours.fluidFluid();
@@ -337,52 +412,54 @@ class PairForcesImpl final : public PairForces<D> {
     FluidParticles<D>& f = ctx.fluid;
     const NeighbourList& list = ctx.neighbours.fluidFluid();
     const WendlandKernel<D> kernel = ctx.kernel;
-    fillColumns(f);
+    const KernelConstants kernel_constants(kernel);
+    const Lanes lanes(f, ctx.setup.domain, grad_rho_);
     const std::size_t n = f.size();
     std::uint64_t interactions = 0;
 #pragma omp parallel for schedule(static) reduction(+ : interactions)
     for (std::size_t i = 0; i < n; ++i) {
       Sums sums;
-      interactions += sumRow(ctx, list, i, sums);
+      interactions += sumRow(ctx, lanes, list, i, sums);
+      if constexpr (kMirror) {
+        const Owner owner{f.v[i], f.rho[i], p_over_rho2_[i], inv_rho_[i],
+                          kRenormalised ? grad_rho_[i] : Vec<D>(Vec<D>::Zero())};
+        forEachImage(ctx, list, i, [&](const Neighbour& nb) { addPair<false>(sums, nullptr, owner, nb, kernel_constants); });
+      }
       storeRates(f, kernel, i, sums);
     }
     return interactions;
   }
 
-  /// Copies the neighbour state the row loop gathers into one array per component.
-  void fillColumns(const FluidParticles<D>& f) {
-    const std::size_t n = f.size();
-    for (int a = 0; a < D; ++a) {
-      columns_.x[a].resize(n);
-      columns_.v[a].resize(n);
-      if constexpr (kRenormalised) columns_.grad_rho[a].resize(n);
-    }
-#pragma omp parallel for schedule(static)
-    for (std::size_t i = 0; i < n; ++i) {
-      for (int a = 0; a < D; ++a) {
-        columns_.x[a][i] = f.r[i][a];
-        columns_.v[a][i] = f.v[i][a];
-        if constexpr (kRenormalised) columns_.grad_rho[a][i] = grad_rho_[i][a];
+  /// With mirror planes, calls visit(nb) for the images near i: those of its listed
+  /// neighbours within reach and its own (a scalar pass, for the few particles within
+  /// 2h of a plane). Nothing without mirror planes.
+  template <class Visit>
+  void forEachImage(const FluidContext<D>& ctx, const NeighbourList& list, std::size_t i, Visit&& visit) const {
+    if constexpr (kMirror) {
+      const FluidParticles<D>& f = ctx.fluid;
+      const NearPlanes near = nearPlanes(f.r[i]);
+      if (!near.mask) return;
+      const double support2 = ctx.kernel.supportSquared();
+      const MinimumImage<D> minimum_image(ctx.setup.domain);
+      auto each = [&](const Neighbour& nb) { visit(nb); };
+      for (std::uint64_t s = list.begin[i]; s < list.begin[i + 1]; ++s) {
+        const std::uint32_t j = list.index[s];
+        const Vec<D> rij = minimum_image(f.r[i] - f.r[j]);
+        // An image is no nearer than its particle while i is on the water's side.
+        if (rij.squaredNorm() < support2) visitImages(f, j, rij, near, each);
       }
+      visitImages(f, static_cast<std::uint32_t>(i), Vec<D>::Zero(), near, each);
     }
   }
 
   /// The sums of owner i over its whole list (the terms of addPair, i's side only).
   /// Returns the number of listed particles within reach.
-  std::uint32_t sumRow(const FluidContext<D>& ctx, const NeighbourList& list, std::size_t i, Sums& out) const {
+  std::uint32_t sumRow(const FluidContext<D>& ctx, const Lanes& lanes, const NeighbourList& list, std::size_t i,
+                       Sums& out) const {
     const FluidParticles<D>& f = ctx.fluid;
     const KernelConstants k(ctx.kernel);
-    const MinimumImage<D> image(ctx.setup.domain);
-    // Scalars and plain pointers only: the vectoriser leaves a loop with local arrays.
-    constexpr int Z = D - 1;  // the third axis in 3D; in 2D its terms are skipped
-    const double *x0 = columns_.x[0].data(), *x1 = columns_.x[1].data(), *x2 = columns_.x[Z].data();
-    const double *v0 = columns_.v[0].data(), *v1 = columns_.v[1].data(), *v2 = columns_.v[Z].data();
-    const double *g0 = nullptr, *g1 = nullptr, *g2 = nullptr;
-    if constexpr (kRenormalised) {
-      g0 = columns_.grad_rho[0].data();
-      g1 = columns_.grad_rho[1].data();
-      g2 = columns_.grad_rho[Z].data();
-    }
+    constexpr int Z = Lanes::Z, S = D;  // S: the stride of the Vec<D> arrays
+    const double *r = lanes.r, *v = lanes.v, *g = lanes.g;
     const double* m = f.m.data();
     const double* rho = f.rho.data();
     const double* p_over_rho2 = p_over_rho2_.data();
@@ -401,24 +478,18 @@ class PairForcesImpl final : public PairForces<D> {
       hy1 = diffusion_.hydrostatic[1];
       hy2 = diffusion_.hydrostatic[Z];
     }
-    const double L0 = image.period[0], L1 = image.period[1], L2 = image.period[Z];  // the image's shift, unrolled
-    const double iL0 = image.inv_period[0], iL1 = image.inv_period[1], iL2 = image.inv_period[Z];
     const double rho_i = f.rho[i], p_i = p_over_rho2_[i], inv_rho_i = inv_rho_[i];
     double ax = 0, ay = 0, az = 0, sx = 0, sy = 0, sz = 0, sw = 0, drho = 0;
     std::uint32_t count = 0;
     const std::uint64_t first = list.begin[i], last = list.begin[i + 1];
 #pragma omp simd reduction(+ : ax, ay, az, sx, sy, sz, sw, drho, count)
     for (std::uint64_t s = first; s < last; ++s) {
-      const std::uint32_t j = index[s];
-      double rx = xi0 - x0[j], ry = xi1 - x1[j], rz = 0.0;
-      rx -= L0 * std::nearbyint(rx * iL0);
-      ry -= L1 * std::nearbyint(ry * iL1);
-      double vr = (vi0 - v0[j]) * rx + (vi1 - v1[j]) * ry;
-      if constexpr (D == 3) {
-        rz = xi2 - x2[j];
-        rz -= L2 * std::nearbyint(rz * iL2);
-        vr += (vi2 - v2[j]) * rz;
-      }
+      const std::size_t j = index[s];
+      const double rx = Lanes::separation(xi0, r[S * j], lanes.L0, lanes.iL0);
+      const double ry = Lanes::separation(xi1, r[S * j + 1], lanes.L1, lanes.iL1);
+      const double rz = D == 3 ? Lanes::separation(xi2, r[S * j + Z], lanes.L2, lanes.iL2) : 0.0;
+      const double vx = v[S * j], vy = v[S * j + 1], vz = D == 3 ? v[S * j + Z] : 0.0;
+      const double vr = (vi0 - vx) * rx + (vi1 - vy) * ry + (vi2 - vz) * rz;
       const double r2 = rx * rx + ry * ry + rz * rz;
       const bool reached = r2 < k.support2;
       const double q = std::sqrt(r2) * k.inv_h;
@@ -446,16 +517,16 @@ class PairForcesImpl final : public PairForces<D> {
       az -= push * rz;
       if constexpr (kXsph) {
         const double w = reached ? k.alpha * t3 * t * (1.0 + 2.0 * q) * volume[j] : 0.0;  // W_ij V_j
-        sx += w * v0[j];
-        sy += w * v1[j];
-        if constexpr (D == 3) sz += w * v2[j];
+        sx += w * vx;
+        sy += w * vy;
+        sz += w * vz;
         sw += w;
       }
       if constexpr (kDiffusion) {
         double jump = rho_i - rho[j];
         if constexpr (kRenormalised) {
-          jump -= 0.5 * ((gi0 + g0[j]) * rx + (gi1 + g1[j]) * ry);
-          if constexpr (D == 3) jump -= 0.5 * (gi2 + g2[j]) * rz;
+          jump -= 0.5 * ((gi0 + g[S * j]) * rx + (gi1 + g[S * j + 1]) * ry);
+          if constexpr (D == 3) jump -= 0.5 * (gi2 + g[S * j + Z]) * rz;
         } else {
           jump -= hy0 * rx + hy1 * ry + hy2 * rz;
         }
@@ -497,27 +568,6 @@ class PairForcesImpl final : public PairForces<D> {
     }
   }
 
-  std::uint64_t sumPairs(FluidContext<D>& ctx) const {
-    FluidParticles<D>& f = ctx.fluid;
-    const NeighbourList& list = ctx.neighbours.fluidFluid();
-    const Domain<D> domain = ctx.setup.domain;
-    const WendlandKernel<D> kernel = ctx.kernel;
-    const KernelConstants k(kernel);
-    const std::size_t n = f.size();
-    std::uint64_t interactions = 0;
-
-#pragma omp parallel for schedule(static) reduction(+ : interactions)
-    for (std::size_t i = 0; i < n; ++i) {
-      const Vec<D> vi = f.v[i];
-      const Owner owner{vi, f.rho[i], p_over_rho2_[i], inv_rho_[i],
-                        kRenormalised ? grad_rho_[i] : Vec<D>(Vec<D>::Zero())};
-      Sums sums;
-      interactions += forEachNeighbour(f, list, domain, i,
-                                       [&](const Neighbour& nb) { return addPair<false>(sums, nullptr, owner, nb, k); });
-      storeRates(f, kernel, i, sums);
-    }
-    return interactions;
-  }
 
   Viscosity viscosity_;
   Xsph xsph_;
@@ -526,10 +576,6 @@ class PairForcesImpl final : public PairForces<D> {
   std::uint64_t interactions_ = 0;
   std::vector<double> p_over_rho2_, inv_rho_, volume_;
   std::vector<std::vector<Sums>> thread_sums_;  ///< sumPairsOnce: one array per thread
-  /// sumRows: the neighbour state as one array per component, for the vector gathers.
-  struct Columns {
-    std::array<std::vector<double>, D> x, v, grad_rho;
-  } columns_;
   std::vector<Vec<D>> grad_rho_;  ///< renormalised density gradients (kRenormalised only)
   std::vector<double> image_rho_, image_p_over_rho2_, image_inv_rho_, image_volume_;  ///< kMirror only
 };
