@@ -8,8 +8,10 @@
 // chosen terms, so a term not named costs nothing and is never constructed; the
 // choice is dispatched once when the simulation is built (DESIGN.md section 5).
 //
-// The loop is a gather (each particle sums its own neighbours), so it needs no
-// atomics; it counts the pairs within 2h it evaluated ("neighbour interactions").
+// The loop needs no atomics: in 3D, periodic domains and with mirror planes each
+// particle sums its own list row in vector lanes (a gather); a bounded 2D scene takes
+// each pair once into per-thread sums (docs/performance.md, sessions 30 and 42). It
+// counts the pairs within 2h it evaluated ("neighbour interactions").
 #include <cstdint>
 #include <memory>
 #include <vector>
