@@ -63,6 +63,12 @@ class PairForcesImpl final : public PairForces<D> {
       const double d = xi - xj;
       return d - L * std::nearbyint(d * inv_L);
     }
+    /// r_i - r_j (minimum image) of an owner at (xi0, xi1, xi2) and neighbour j; rz = 0 in 2D.
+    void separation(double xi0, double xi1, double xi2, std::size_t j, double& rx, double& ry, double& rz) const {
+      rx = separation(xi0, r[D * j], L0, iL0);
+      ry = separation(xi1, r[D * j + 1], L1, iL1);
+      rz = D == 3 ? separation(xi2, r[D * j + Z], L2, iL2) : 0.0;
+    }
   };
 
   /// The sums of particle i's rates.
@@ -85,7 +91,7 @@ class PairForcesImpl final : public PairForces<D> {
     const KernelConstants k(ctx.kernel);
     const Lanes lanes(f, ctx.setup.domain, {});
     constexpr int Z = Lanes::Z, S = D;  // S: the stride of the Vec<D> arrays
-    const double *r = lanes.r, *v = lanes.v, *m = f.m.data();
+    const double *v = lanes.v, *m = f.m.data();
     const std::uint32_t* index = list.index.data();
     const std::size_t n = f.size();
     out.resize(n);
@@ -98,14 +104,11 @@ class PairForcesImpl final : public PairForces<D> {
 #pragma omp simd reduction(+ : sum)
       for (std::uint64_t s = first; s < last; ++s) {
         const std::size_t j = index[s];
-        const double rx = Lanes::separation(xi0, r[S * j], lanes.L0, lanes.iL0);
-        const double ry = Lanes::separation(xi1, r[S * j + 1], lanes.L1, lanes.iL1);
-        double r2 = rx * rx + ry * ry, vr = (vi0 - v[S * j]) * rx + (vi1 - v[S * j + 1]) * ry;
-        if constexpr (D == 3) {
-          const double rz = Lanes::separation(xi2, r[S * j + Z], lanes.L2, lanes.iL2);
-          r2 += rz * rz;
-          vr += (vi2 - v[S * j + Z]) * rz;
-        }
+        double rx, ry, rz;
+        lanes.separation(xi0, xi1, xi2, j, rx, ry, rz);
+        const double r2 = rx * rx + ry * ry + rz * rz;
+        const double vz = D == 3 ? v[S * j + Z] : 0.0;
+        const double vr = (vi0 - v[S * j]) * rx + (vi1 - v[S * j + 1]) * ry + (vi2 - vz) * rz;
         const double t = 2.0 - std::sqrt(r2) * k.inv_h;
         sum += r2 < k.support2 ? m[j] * vr * k.grad_scale * t * t * t : 0.0;
       }
@@ -260,8 +263,8 @@ class PairForcesImpl final : public PairForces<D> {
     const NeighbourList& list = ctx.neighbours.fluidFluid();
     const KernelConstants k(ctx.kernel);
     const Lanes lanes(f, ctx.setup.domain, {});
-    constexpr int Z = Lanes::Z, S = D;
-    const double *r = lanes.r, *rho = f.rho.data(), *volume = volume_.data();
+    constexpr int Z = Lanes::Z;
+    const double *rho = f.rho.data(), *volume = volume_.data();
     const std::uint32_t* index = list.index.data();
     // det of sum_j V_j r_ji (x) grad_i W_ij on a full neighbourhood: ~1 (it is the
     // identity for an exact quadrature), so min_det is a fraction of one.
@@ -277,9 +280,8 @@ class PairForcesImpl final : public PairForces<D> {
 #pragma omp simd reduction(+ : m00, m01, m11, m02, m12, m22, s0, s1, s2)
       for (std::uint64_t s = first; s < last; ++s) {
         const std::size_t j = index[s];
-        const double rx = Lanes::separation(xi0, r[S * j], lanes.L0, lanes.iL0);
-        const double ry = Lanes::separation(xi1, r[S * j + 1], lanes.L1, lanes.iL1);
-        const double rz = D == 3 ? Lanes::separation(xi2, r[S * j + Z], lanes.L2, lanes.iL2) : 0.0;
+        double rx, ry, rz;
+        lanes.separation(xi0, xi1, xi2, j, rx, ry, rz);
         const double r2 = rx * rx + ry * ry + rz * rz;
         const double t = 2.0 - std::sqrt(r2) * k.inv_h;
         const double F = r2 < k.support2 ? k.grad_scale * t * t * t * volume[j] : 0.0;  // V_j grad_i W_ij = F r_ij
@@ -459,7 +461,7 @@ class PairForcesImpl final : public PairForces<D> {
     const FluidParticles<D>& f = ctx.fluid;
     const KernelConstants k(ctx.kernel);
     constexpr int Z = Lanes::Z, S = D;  // S: the stride of the Vec<D> arrays
-    const double *r = lanes.r, *v = lanes.v, *g = lanes.g;
+    const double *v = lanes.v, *g = lanes.g;
     const double* m = f.m.data();
     const double* rho = f.rho.data();
     const double* p_over_rho2 = p_over_rho2_.data();
@@ -485,9 +487,8 @@ class PairForcesImpl final : public PairForces<D> {
 #pragma omp simd reduction(+ : ax, ay, az, sx, sy, sz, sw, drho, count)
     for (std::uint64_t s = first; s < last; ++s) {
       const std::size_t j = index[s];
-      const double rx = Lanes::separation(xi0, r[S * j], lanes.L0, lanes.iL0);
-      const double ry = Lanes::separation(xi1, r[S * j + 1], lanes.L1, lanes.iL1);
-      const double rz = D == 3 ? Lanes::separation(xi2, r[S * j + Z], lanes.L2, lanes.iL2) : 0.0;
+      double rx, ry, rz;
+      lanes.separation(xi0, xi1, xi2, j, rx, ry, rz);
       const double vx = v[S * j], vy = v[S * j + 1], vz = D == 3 ? v[S * j + Z] : 0.0;
       const double vr = (vi0 - vx) * rx + (vi1 - vy) * ry + (vi2 - vz) * rz;
       const double r2 = rx * rx + ry * ry + rz * rz;
