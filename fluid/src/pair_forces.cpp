@@ -2,7 +2,6 @@
 
 #include <omp.h>
 
-#include <array>
 #include <cmath>
 #include <stdexcept>
 #include <type_traits>
@@ -230,30 +229,6 @@ class PairForcesImpl final : public PairForces<D> {
       if ((near.mask & (1u << a)) && near.distance[a] + near.inside[a] * (f.r[j][a] - near.position[a]) < mirror_.reach)
         reachable |= 1u << a;
     for (unsigned axes = reachable; axes != 0; axes = (axes - 1) & reachable) visit(image(f, j, rij, near, axes));
-  }
-
-  /// Calls visit(nb) for every neighbour of i: each listed particle j and, with mirror
-  /// planes, j's images and i's own. visit returns false when nb is out of reach; j's
-  /// images are then skipped, being no nearer while i is on the water's side of the
-  /// planes. Returns the number of listed particles within reach.
-  template <class Visit>
-  std::uint32_t forEachNeighbour(const FluidParticles<D>& f, const NeighbourList& list, const Domain<D>& domain,
-                                 std::size_t i, Visit&& visit) const {
-    NearPlanes near;
-    if constexpr (kMirror) near = nearPlanes(f.r[i]);
-    std::uint32_t count = 0;
-    for (std::uint64_t s = list.begin[i]; s < list.begin[i + 1]; ++s) {
-      const std::uint32_t j = list.index[s];
-      Vec<D> rij = f.r[i] - f.r[j];
-      if constexpr (Periodic) rij = domain.minimumImage(rij);
-      if (!visit(particle(f, j, rij))) continue;
-      ++count;
-      if constexpr (kMirror)
-        if (near.mask) visitImages(f, j, rij, near, visit);
-    }
-    if constexpr (kMirror)
-      if (near.mask) visitImages(f, static_cast<std::uint32_t>(i), Vec<D>::Zero(), near, visit);
-    return count;
   }
 
   /// G_i of RenormalisedDensityDiffusionTerm: the renormalised density gradient, each
