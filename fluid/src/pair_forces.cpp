@@ -381,7 +381,7 @@ class PairForcesImpl final : public PairForces<D> {
 
   /// Each owner's row of its list summed on its own, every pair seen from both sides,
   /// the row's candidates taken several at a time (#pragma omp simd: gathers from the
-  /// columns, the lanes out of reach masked by zeroing F and W). Twice the pair
+  /// Vec<D> arrays through Lanes, the lanes out of reach masked by zeroing F and W). Twice the pair
   /// evaluations of sumPairsOnce, but no scatter into j's sums, no per-thread arrays,
   /// no j > i test and no division for the periodic image: in 3D the vector lanes more
   /// than pay for it (docs/performance.md, session 42).
@@ -396,7 +396,7 @@ class PairForcesImpl final : public PairForces<D> {
 #pragma omp parallel for schedule(static) reduction(+ : interactions)
     for (std::size_t i = 0; i < n; ++i) {
       Sums sums;
-      interactions += sumRow(ctx, lanes, list, i, sums);
+      interactions += sumRow(ctx, lanes, kernel_constants, list, i, sums);
       if constexpr (kMirror) {
         const Owner owner{f.v[i], f.rho[i], p_over_rho2_[i], inv_rho_[i],
                           kRenormalised ? grad_rho_[i] : Vec<D>(Vec<D>::Zero())};
@@ -431,10 +431,9 @@ class PairForcesImpl final : public PairForces<D> {
 
   /// The sums of owner i over its whole list (the terms of addPair, i's side only).
   /// Returns the number of listed particles within reach.
-  std::uint32_t sumRow(const FluidContext<D>& ctx, const Lanes& lanes, const NeighbourList& list, std::size_t i,
-                       Sums& out) const {
+  std::uint32_t sumRow(const FluidContext<D>& ctx, const Lanes& lanes, const KernelConstants& k,
+                       const NeighbourList& list, std::size_t i, Sums& out) const {
     const FluidParticles<D>& f = ctx.fluid;
-    const KernelConstants k(ctx.kernel);
     constexpr int Z = Lanes::Z, S = D;  // S: the stride of the Vec<D> arrays
     const double *v = lanes.v, *g = lanes.g;
     const double* m = f.m.data();
@@ -543,7 +542,6 @@ class PairForcesImpl final : public PairForces<D> {
       f.drdt[i] = vi;
     }
   }
-
 
   Viscosity viscosity_;
   Xsph xsph_;
